@@ -1,0 +1,99 @@
+//! Compiles every `shaders/*.comp` to SPIR-V with shaderc, resolving `#include`
+//! from `shaders/include/`. A GLSL error fails the build with the file and line.
+
+use std::path::{Path, PathBuf};
+
+fn main() {
+    if let Err(e) = run() {
+        // One line per error, as `file:line: message`, then fail the build.
+        eprintln!("{e}");
+        std::process::exit(1);
+    }
+}
+
+fn run() -> Result<(), String> {
+    let root = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").map_err(|e| e.to_string())?);
+    let out = PathBuf::from(std::env::var("OUT_DIR").map_err(|e| e.to_string())?);
+    let shader_dir = root.join("shaders");
+    let include_dir = shader_dir.join("include");
+    println!("cargo:rerun-if-changed={}", shader_dir.display());
+    println!("cargo:rerun-if-changed={}", include_dir.display());
+
+    let compiler = shaderc::Compiler::new().map_err(|e| format!("starting shaderc: {e}"))?;
+    let mut sources: Vec<PathBuf> = std::fs::read_dir(&shader_dir)
+        .map_err(|e| format!("{}: {e}", shader_dir.display()))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "comp"))
+        .collect();
+    sources.sort();
+    for entry in
+        std::fs::read_dir(&include_dir).map_err(|e| format!("{}: {e}", include_dir.display()))?
+    {
+        let p = entry.map_err(|e| e.to_string())?.path();
+        println!("cargo:rerun-if-changed={}", p.display());
+    }
+
+    let mut errors = Vec::new();
+    for src in &sources {
+        println!("cargo:rerun-if-changed={}", src.display());
+        match compile(&compiler, src, &include_dir) {
+            Ok(words) => {
+                let name = src
+                    .file_name()
+                    .map(|n| n.to_string_lossy().into_owned())
+                    .unwrap_or_default();
+                let dst = out.join(format!("{name}.spv"));
+                std::fs::write(&dst, words).map_err(|e| format!("{}: {e}", dst.display()))?;
+            }
+            Err(e) => errors.push(e),
+        }
+    }
+    if errors.is_empty() {
+        Ok(())
+    } else {
+        Err(errors.join("\n"))
+    }
+}
+
+fn compile(
+    compiler: &shaderc::Compiler,
+    src: &Path,
+    include_dir: &Path,
+) -> Result<Vec<u8>, String> {
+    let text = std::fs::read_to_string(src).map_err(|e| format!("{}: {e}", src.display()))?;
+    let mut options =
+        shaderc::CompileOptions::new().map_err(|e| format!("shaderc options: {e}"))?;
+    options.set_target_env(
+        shaderc::TargetEnv::Vulkan,
+        shaderc::EnvVersion::Vulkan1_2 as u32,
+    );
+    options.set_optimization_level(shaderc::OptimizationLevel::Performance);
+    options.set_generate_debug_info();
+    let inc = include_dir.to_owned();
+    options.set_include_callback(move |name, _kind, from, _depth| {
+        let path = inc.join(name);
+        std::fs::read_to_string(&path)
+            .map(|content| shaderc::ResolvedInclude {
+                resolved_name: path.display().to_string(),
+                content,
+            })
+            .map_err(|e| format!("{from}: cannot include `{name}` ({}): {e}", path.display()))
+    });
+    let name = src.display().to_string();
+    let artifact = compiler
+        .compile_into_spirv(
+            &text,
+            shaderc::ShaderKind::Compute,
+            &name,
+            "main",
+            Some(&options),
+        )
+        .map_err(|e| format!("GLSL error: {e}"))?;
+    if artifact.get_num_warnings() > 0 {
+        println!(
+            "cargo:warning={}",
+            artifact.get_warning_messages().replace('\n', " | ")
+        );
+    }
+    Ok(artifact.as_binary_u8().to_vec())
+}

@@ -1,0 +1,29 @@
+// Uniform parameters of the ray march. Mirrored by `RaymarchParams` in
+// src/passes/raymarch.rs; a test checks the two layouts agree (std140, all vec4).
+#ifndef PARAMS_GLSL
+#define PARAMS_GLSL
+
+#define MAX_HOLES 8
+
+// Disk kinds (disk_normal.w).
+#define DISK_NONE 0
+#define DISK_THIN 1
+
+// Sky kinds (sky.x).
+#define SKY_BLACK 0
+#define SKY_CHECKER 1
+
+layout(std140, binding = 1) uniform RaymarchParams {
+    vec4 cam_pos;      // xyz: camera position; w: tan(vfov / 2)
+    vec4 cam_right;    // xyz: right;           w: aspect (W / H)
+    vec4 cam_up;       // xyz: camera up
+    vec4 cam_fwd;      // xyz: forward
+    vec4 disk_normal;  // xyz: unit normal;     w: disk kind
+    vec4 disk;         // x: inner radius, y: outer radius, z: brightness
+    vec4 sky;          // x: sky kind, y: squares, z: brightness
+    vec4 integ;        // x: tolerance, y: escape radius, z: gravity on (1/0)
+    uvec4 counts;      // x: hole count, y: width, z: height, w: step budget
+    vec4 holes[MAX_HOLES]; // xyz: position, w: rs
+} P;
+
+#endif

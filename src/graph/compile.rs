@@ -1,0 +1,442 @@
+//! Compiling a graph: pure code, no Vulkan calls, unit-tested without a device.
+//!
+//! [`compile`] reads as a list of steps (after Granite's `bake()`):
+//!
+//! 1. Validate every declared use (range inside the image, access allowed on
+//!    the resource kind, no subresource used twice in one pass), so a wrong
+//!    declaration fails here, not as a driver crash.
+//! 2. Cull: walk the passes backwards from what leaves the graph (imported
+//!    resources with a final state); a pass lives if it writes a subresource a
+//!    live pass (or the outside) reads. Culling is per mip level.
+//! 3. Order: keep declaration order among the live passes. Passes can only read
+//!    what earlier passes wrote, so declaration order is already a valid order.
+//! 4. Derive usage flags of every image and buffer from their live accesses.
+//! 5. Track the state of every subresource through the live passes and emit
+//!    the minimal barrier before each use: a layout change, a write after
+//!    anything (WAW / WAR), or a read of a write not yet made visible to that
+//!    stage and access (RAW). Reads of an already visible write add nothing.
+//! 6. Merge adjacent mip levels whose barriers are identical into one range.
+//! 7. Emit the final barriers that leave imported resources in their requested
+//!    final state.
+
+use ash::vk;
+
+use super::{Graph, ImageOrigin};
+use crate::vk::Access;
+use crate::{Error, Result};
+
+/// One image memory barrier over a range of mips.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ImageBarrier {
+    pub image: usize,
+    pub base_mip: u32,
+    pub mip_count: u32,
+    pub src_stage: vk::PipelineStageFlags2,
+    pub src_access: vk::AccessFlags2,
+    pub dst_stage: vk::PipelineStageFlags2,
+    pub dst_access: vk::AccessFlags2,
+    pub old_layout: vk::ImageLayout,
+    pub new_layout: vk::ImageLayout,
+}
+
+/// One buffer memory barrier (whole buffer).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BufferBarrier {
+    pub buffer: usize,
+    pub src_stage: vk::PipelineStageFlags2,
+    pub src_access: vk::AccessFlags2,
+    pub dst_stage: vk::PipelineStageFlags2,
+    pub dst_access: vk::AccessFlags2,
+}
+
+/// Barriers recorded together before one pass (or after the last).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct PassBarriers {
+    pub images: Vec<ImageBarrier>,
+    pub buffers: Vec<BufferBarrier>,
+}
+
+impl PassBarriers {
+    /// True when nothing needs to be recorded.
+    pub fn is_empty(&self) -> bool {
+        self.images.is_empty() && self.buffers.is_empty()
+    }
+}
+
+/// The result of [`compile`].
+#[derive(Clone, Debug, Default)]
+pub struct Compiled {
+    /// Live passes, in execution order (indices into the graph's passes).
+    pub order: Vec<usize>,
+    /// Passes culled because nobody uses what they write.
+    pub culled: Vec<usize>,
+    /// Barriers before each pass of `order` (same length).
+    pub before: Vec<PassBarriers>,
+    /// Barriers after the last pass, leaving imports in their final state.
+    pub after: PassBarriers,
+    /// Usage flags of every image (index = image id).
+    pub image_usage: Vec<vk::ImageUsageFlags>,
+    /// Usage flags of every buffer (index = buffer id).
+    pub buffer_usage: Vec<vk::BufferUsageFlags>,
+}
+
+/// Synchronization state of one subresource (one mip, or one buffer).
+#[derive(Clone, Copy, Debug)]
+struct SubState {
+    layout: vk::ImageLayout,
+    /// Stage and access of the last write, if any.
+    write_stage: vk::PipelineStageFlags2,
+    write_access: vk::AccessFlags2,
+    /// Stages and accesses the last write (or transition) is already visible to.
+    visible_stage: vk::PipelineStageFlags2,
+    visible_access: vk::AccessFlags2,
+    /// Stages that read since the last write (a later write must wait for them).
+    read_stage: vk::PipelineStageFlags2,
+}
+
+impl SubState {
+    fn from_access(access: Access) -> Self {
+        let i = access.info();
+        let mut s = SubState {
+            layout: i.layout,
+            write_stage: vk::PipelineStageFlags2::NONE,
+            write_access: vk::AccessFlags2::NONE,
+            visible_stage: vk::PipelineStageFlags2::NONE,
+            visible_access: vk::AccessFlags2::NONE,
+            read_stage: vk::PipelineStageFlags2::NONE,
+        };
+        if i.writes {
+            s.write_stage = i.stage;
+            s.write_access = i.access;
+        } else {
+            s.read_stage = i.stage;
+        }
+        s
+    }
+}
+
+/// The barrier one access needs on one subresource, given its state; updates
+/// the state. `None` when the access is already safe.
+///
+/// Returns (src_stage, src_access, dst_stage, dst_access, old, new).
+type Dep = (
+    vk::PipelineStageFlags2,
+    vk::AccessFlags2,
+    vk::PipelineStageFlags2,
+    vk::AccessFlags2,
+    vk::ImageLayout,
+    vk::ImageLayout,
+);
+
+/// Whether the last write is already visible to this read's stage and access.
+fn already_visible(s: &SubState, i: crate::vk::AccessInfo) -> bool {
+    s.visible_stage.contains(i.stage) && s.visible_access.contains(i.access)
+}
+
+fn transition(s: &mut SubState, access: Access, track_layout: bool) -> Option<Dep> {
+    let i = access.info();
+    let new_layout = if track_layout {
+        i.layout
+    } else {
+        vk::ImageLayout::UNDEFINED
+    };
+    let layout_change = track_layout && s.layout != new_layout;
+    let dep = if i.writes || layout_change {
+        // A write (or a layout transition, which writes) must wait for the last
+        // write and every read since, and the last write must be made available.
+        // The visible stages chain through an earlier barrier to that write.
+        let src_stage = s.write_stage | s.read_stage | s.visible_stage;
+        let needed = !src_stage.is_empty() || layout_change;
+        needed.then_some((
+            src_stage,
+            s.write_access,
+            i.stage,
+            i.access,
+            s.layout,
+            new_layout,
+        ))
+    } else if !s.write_access.is_empty() && !already_visible(s, i) {
+        // Read after a write not yet visible to this stage and access.
+        Some((
+            s.write_stage | s.visible_stage,
+            s.write_access,
+            i.stage,
+            i.access,
+            s.layout,
+            s.layout,
+        ))
+    } else {
+        None
+    };
+
+    // Update the state.
+    if i.writes {
+        s.write_stage = i.stage;
+        s.write_access = i.access;
+        s.visible_stage = vk::PipelineStageFlags2::NONE;
+        s.visible_access = vk::AccessFlags2::NONE;
+        s.read_stage = vk::PipelineStageFlags2::NONE;
+    } else {
+        if layout_change {
+            // The transition is now the last "write"; it is visible to this access.
+            s.write_stage = vk::PipelineStageFlags2::NONE;
+            s.read_stage = vk::PipelineStageFlags2::NONE;
+            s.visible_stage = i.stage;
+            s.visible_access = i.access;
+            // Keep write_access: a later reader of another kind still needs
+            // the original write made visible to it.
+        } else if dep.is_some() {
+            s.visible_stage |= i.stage;
+            s.visible_access |= i.access;
+        }
+        s.read_stage |= i.stage;
+    }
+    s.layout = new_layout;
+    dep
+}
+
+/// Compiles `graph`; see the module docs for the steps.
+pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
+    let n_images = graph.images.len();
+    let n_buffers = graph.buffers.len();
+
+    // 1. Validate the declarations.
+    for pass in &graph.passes {
+        let mut seen: Vec<(usize, u32)> = Vec::new();
+        for u in &pass.images {
+            let node = graph.images.get(u.image).ok_or_else(|| {
+                Error::Other(format!(
+                    "pass `{}` uses an image of another graph",
+                    pass.name
+                ))
+            })?;
+            if !u.access.valid_for_image() || u.access == Access::Nothing {
+                return Err(Error::Other(format!(
+                    "pass `{}`: {:?} is not an image access",
+                    pass.name, u.access
+                )));
+            }
+            let levels = u.mips.levels(node.desc.mip_levels);
+            if levels.is_empty()
+                || (u.mips.count != u32::MAX && levels.len() != u.mips.count as usize)
+            {
+                return Err(Error::Other(format!(
+                    "pass `{}`: mips {}..{} of `{}` are outside its {} levels",
+                    pass.name,
+                    u.mips.base,
+                    u.mips.base.saturating_add(u.mips.count),
+                    node.name,
+                    node.desc.mip_levels
+                )));
+            }
+            for m in levels {
+                if seen.contains(&(u.image, m)) {
+                    return Err(Error::Other(format!(
+                        "pass `{}` declares mip {m} of `{}` twice; use one read-write access",
+                        pass.name, node.name
+                    )));
+                }
+                seen.push((u.image, m));
+            }
+        }
+        for u in &pass.buffers {
+            let node = graph.buffers.get(u.buffer).ok_or_else(|| {
+                Error::Other(format!(
+                    "pass `{}` uses a buffer of another graph",
+                    pass.name
+                ))
+            })?;
+            if !u.access.valid_for_buffer() || u.access == Access::Nothing {
+                return Err(Error::Other(format!(
+                    "pass `{}`: {:?} is not a buffer access (buffer `{}`)",
+                    pass.name, u.access, node.name
+                )));
+            }
+        }
+    }
+
+    // 2. Cull, per mip, backwards from what leaves the graph.
+    let mut image_needed: Vec<Vec<bool>> = graph
+        .images
+        .iter()
+        .map(|img| {
+            let exported = matches!(
+                img.origin,
+                ImageOrigin::Imported {
+                    final_access: Some(_),
+                    ..
+                }
+            );
+            vec![exported; img.desc.mip_levels as usize]
+        })
+        .collect();
+    let mut buffer_needed: Vec<bool> = graph
+        .buffers
+        .iter()
+        .map(|b| b.final_access.is_some())
+        .collect();
+    let mut live = vec![false; graph.passes.len()];
+    for (p, pass) in graph.passes.iter().enumerate().rev() {
+        let writes_needed = pass.images.iter().any(|u| {
+            u.access.info().writes
+                && u.mips
+                    .levels(graph.images[u.image].desc.mip_levels)
+                    .any(|m| image_needed[u.image][m as usize])
+        }) || pass
+            .buffers
+            .iter()
+            .any(|u| u.access.info().writes && buffer_needed[u.buffer]);
+        if !writes_needed {
+            continue;
+        }
+        live[p] = true;
+        for u in &pass.images {
+            if !u.access.info().writes || u.access == Access::ComputeStorageReadWrite {
+                for m in u.mips.levels(graph.images[u.image].desc.mip_levels) {
+                    image_needed[u.image][m as usize] = true;
+                }
+            }
+        }
+        for u in &pass.buffers {
+            if !u.access.info().writes || u.access == Access::ComputeStorageReadWrite {
+                buffer_needed[u.buffer] = true;
+            }
+        }
+    }
+
+    // 3. Order: declaration order of the live passes.
+    let order: Vec<usize> = (0..graph.passes.len()).filter(|&p| live[p]).collect();
+    let culled: Vec<usize> = (0..graph.passes.len()).filter(|&p| !live[p]).collect();
+
+    // 4. Usage flags from live accesses (and the imports' own states).
+    let mut image_usage = vec![vk::ImageUsageFlags::empty(); n_images];
+    let mut buffer_usage = vec![vk::BufferUsageFlags::empty(); n_buffers];
+    for &p in &order {
+        for u in &graph.passes[p].images {
+            image_usage[u.image] |= u.access.image_usage();
+        }
+        for u in &graph.passes[p].buffers {
+            buffer_usage[u.buffer] |= u.access.buffer_usage();
+        }
+    }
+
+    // 5. Track state per subresource and emit barriers before each pass.
+    let mut image_state: Vec<Vec<SubState>> = graph
+        .images
+        .iter()
+        .map(|img| {
+            let initial = match &img.origin {
+                ImageOrigin::Transient => Access::Nothing,
+                ImageOrigin::Imported { initial, .. } => *initial,
+            };
+            vec![SubState::from_access(initial); img.desc.mip_levels as usize]
+        })
+        .collect();
+    let mut buffer_state: Vec<SubState> = graph
+        .buffers
+        .iter()
+        .map(|b| SubState::from_access(b.initial))
+        .collect();
+
+    let mut before = Vec::with_capacity(order.len());
+    for &p in &order {
+        let pass = &graph.passes[p];
+        let mut barriers = PassBarriers::default();
+        for u in &pass.images {
+            let levels = u.mips.levels(graph.images[u.image].desc.mip_levels);
+            let deps: Vec<(u32, Option<Dep>)> = levels
+                .map(|m| {
+                    let dep = transition(&mut image_state[u.image][m as usize], u.access, true);
+                    (m, dep)
+                })
+                .collect();
+            // 6. Merge adjacent levels with identical barriers.
+            merge_levels(u.image, &deps, &mut barriers.images);
+        }
+        for u in &pass.buffers {
+            if let Some(d) = transition(&mut buffer_state[u.buffer], u.access, false) {
+                barriers.buffers.push(buffer_barrier(u.buffer, d));
+            }
+        }
+        before.push(barriers);
+    }
+
+    // 7. Leave imports in their final state.
+    let mut after = PassBarriers::default();
+    for (id, img) in graph.images.iter().enumerate() {
+        if let ImageOrigin::Imported {
+            final_access: Some(fin),
+            ..
+        } = img.origin
+        {
+            let deps: Vec<(u32, Option<Dep>)> = (0..img.desc.mip_levels)
+                .map(|m| (m, transition(&mut image_state[id][m as usize], fin, true)))
+                .collect();
+            merge_levels(id, &deps, &mut after.images);
+        }
+    }
+    for (id, b) in graph.buffers.iter().enumerate() {
+        if let Some(fin) = b.final_access {
+            if let Some(d) = transition(&mut buffer_state[id], fin, false) {
+                after.buffers.push(buffer_barrier(id, d));
+            }
+        }
+    }
+
+    Ok(Compiled {
+        order,
+        culled,
+        before,
+        after,
+        image_usage,
+        buffer_usage,
+    })
+}
+
+fn buffer_barrier(buffer: usize, d: Dep) -> BufferBarrier {
+    BufferBarrier {
+        buffer,
+        src_stage: d.0,
+        src_access: d.1,
+        dst_stage: d.2,
+        dst_access: d.3,
+    }
+}
+
+fn merge_levels(image: usize, deps: &[(u32, Option<Dep>)], out: &mut Vec<ImageBarrier>) {
+    let mut current: Option<ImageBarrier> = None;
+    for &(m, dep) in deps {
+        let Some(d) = dep else {
+            out.extend(current.take());
+            continue;
+        };
+        let b = ImageBarrier {
+            image,
+            base_mip: m,
+            mip_count: 1,
+            src_stage: d.0,
+            src_access: d.1,
+            dst_stage: d.2,
+            dst_access: d.3,
+            old_layout: d.4,
+            new_layout: d.5,
+        };
+        match current.as_mut() {
+            Some(c)
+                if c.base_mip + c.mip_count == m
+                    && ImageBarrier {
+                        base_mip: c.base_mip,
+                        mip_count: c.mip_count,
+                        ..b
+                    } == *c =>
+            {
+                c.mip_count += 1;
+            }
+            _ => {
+                out.extend(current.take());
+                current = Some(b);
+            }
+        }
+    }
+    out.extend(current);
+}

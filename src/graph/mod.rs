@@ -1,0 +1,242 @@
+//! The frame graph: passes declare what they read and write; the graph orders
+//! them, culls the unused ones, derives usage flags and every barrier, and
+//! records them.
+//!
+//! Three layers that never leak into each other (after kajiya-rg): `vk` wraps
+//! Vulkan, this module schedules, `passes` add effects. A pass never writes a
+//! barrier, never sets a usage flag and never opens a debug label or a
+//! timestamp: [`compile`] and [`execute`] do that from the declarations.
+//!
+//! ```text
+//! let mut g = Graph::new();
+//! let mut hdr = g.create_image("hdr", ImageDesc::new_2d(format, w, h));
+//! g.add_pass("raymarch")
+//!     .write(&mut hdr, Access::ComputeStorageWrite, Mips::ALL)
+//!     .record(move |ctx| { /* bind, dispatch */ });
+//! let compiled = g.compile()?;
+//! ```
+
+pub mod compile;
+pub mod execute;
+pub mod resource;
+
+pub use compile::{BufferBarrier, Compiled, ImageBarrier, PassBarriers, compile};
+pub use execute::{PassContext, TransientPool};
+pub use resource::{BufferBinding, BufferHandle, ImageBinding, ImageDesc, ImageHandle, Mips};
+
+use crate::vk::Access;
+
+/// Where an image comes from.
+#[derive(Clone, Debug)]
+pub(crate) enum ImageOrigin {
+    /// Created (or reused) by the graph; contents start undefined each frame.
+    Transient,
+    /// Owned outside; starts in `initial` and must end in `final_access`.
+    Imported {
+        binding: ImageBinding,
+        initial: Access,
+        final_access: Option<Access>,
+    },
+}
+
+#[derive(Clone, Debug)]
+pub(crate) struct ImageNode {
+    pub name: String,
+    pub desc: ImageDesc,
+    pub origin: ImageOrigin,
+}
+
+#[derive(Clone, Debug)]
+pub(crate) struct BufferNode {
+    pub name: String,
+    pub binding: BufferBinding,
+    pub initial: Access,
+    pub final_access: Option<Access>,
+}
+
+/// One declared image use of a pass.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ImageUse {
+    pub image: usize,
+    pub access: Access,
+    pub mips: Mips,
+}
+
+/// One declared buffer use of a pass.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BufferUse {
+    pub buffer: usize,
+    pub access: Access,
+}
+
+/// What a pass records once its barriers are in place.
+pub type RecordFn<'a> = Box<dyn FnOnce(&mut PassContext<'_>) -> crate::Result<()> + 'a>;
+
+pub(crate) struct PassNode<'a> {
+    pub name: String,
+    pub images: Vec<ImageUse>,
+    pub buffers: Vec<BufferUse>,
+    pub record: Option<RecordFn<'a>>,
+}
+
+/// A frame's worth of passes and resources. Built each frame (cheap), compiled,
+/// executed, dropped.
+#[derive(Default)]
+pub struct Graph<'a> {
+    pub(crate) images: Vec<ImageNode>,
+    pub(crate) buffers: Vec<BufferNode>,
+    pub(crate) passes: Vec<PassNode<'a>>,
+}
+
+impl<'a> Graph<'a> {
+    /// An empty graph.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// A graph-owned image, created once and reused across frames.
+    pub fn create_image(&mut self, name: &str, desc: ImageDesc) -> ImageHandle {
+        self.images.push(ImageNode {
+            name: name.to_owned(),
+            desc,
+            origin: ImageOrigin::Transient,
+        });
+        ImageHandle {
+            id: self.images.len() - 1,
+            desc,
+        }
+    }
+
+    /// An image owned outside the graph, currently in state `initial`; if
+    /// `final_access` is given, the graph leaves it in that state and keeps
+    /// every pass that writes it.
+    pub fn import_image(
+        &mut self,
+        name: &str,
+        desc: ImageDesc,
+        binding: ImageBinding,
+        initial: Access,
+        final_access: Option<Access>,
+    ) -> ImageHandle {
+        self.images.push(ImageNode {
+            name: name.to_owned(),
+            desc,
+            origin: ImageOrigin::Imported {
+                binding,
+                initial,
+                final_access,
+            },
+        });
+        ImageHandle {
+            id: self.images.len() - 1,
+            desc,
+        }
+    }
+
+    /// A buffer owned outside the graph (see [`Graph::import_image`]).
+    pub fn import_buffer(
+        &mut self,
+        name: &str,
+        binding: BufferBinding,
+        initial: Access,
+        final_access: Option<Access>,
+    ) -> BufferHandle {
+        self.buffers.push(BufferNode {
+            name: name.to_owned(),
+            binding,
+            initial,
+            final_access,
+        });
+        BufferHandle {
+            id: self.buffers.len() - 1,
+            size: binding.size,
+        }
+    }
+
+    /// Starts a pass; declare its uses on the builder, then `record`.
+    pub fn add_pass<'g>(&'g mut self, name: &str) -> PassBuilder<'g, 'a> {
+        self.passes.push(PassNode {
+            name: name.to_owned(),
+            images: Vec::new(),
+            buffers: Vec::new(),
+            record: None,
+        });
+        PassBuilder { graph: self }
+    }
+
+    /// Names of the passes in declaration order.
+    pub fn pass_names(&self) -> Vec<&str> {
+        self.passes.iter().map(|p| p.name.as_str()).collect()
+    }
+
+    /// Name of image `id` (for messages and labels).
+    pub fn image_name(&self, h: &ImageHandle) -> &str {
+        &self.images[h.id].name
+    }
+
+    /// Orders, culls and synchronizes the graph (pure; no Vulkan calls).
+    pub fn compile(&self) -> crate::Result<Compiled> {
+        compile::compile(self)
+    }
+}
+
+/// Declares one pass's uses. Dropping it without `record` leaves a pass that
+/// records nothing (still scheduled, still synchronized).
+pub struct PassBuilder<'g, 'a> {
+    graph: &'g mut Graph<'a>,
+}
+
+impl<'a> PassBuilder<'_, 'a> {
+    fn pass(&mut self) -> &mut PassNode<'a> {
+        // add_pass pushed the node this builder describes.
+        let last = self.graph.passes.len() - 1;
+        &mut self.graph.passes[last]
+    }
+
+    /// Declares a read of `mips` of `image`.
+    pub fn read(mut self, image: &ImageHandle, access: Access, mips: Mips) -> Self {
+        debug_assert!(!access.info().writes, "{access:?} is a write; use write()");
+        self.pass().images.push(ImageUse {
+            image: image.id,
+            access,
+            mips,
+        });
+        self
+    }
+
+    /// Declares a write (or read-write) of `mips` of `image`.
+    pub fn write(mut self, image: &mut ImageHandle, access: Access, mips: Mips) -> Self {
+        debug_assert!(access.info().writes, "{access:?} is a read; use read()");
+        self.pass().images.push(ImageUse {
+            image: image.id,
+            access,
+            mips,
+        });
+        self
+    }
+
+    /// Declares a read of `buffer`.
+    pub fn read_buffer(mut self, buffer: &BufferHandle, access: Access) -> Self {
+        debug_assert!(!access.info().writes, "{access:?} is a write");
+        self.pass().buffers.push(BufferUse {
+            buffer: buffer.id,
+            access,
+        });
+        self
+    }
+
+    /// Declares a write of `buffer`.
+    pub fn write_buffer(mut self, buffer: &mut BufferHandle, access: Access) -> Self {
+        debug_assert!(access.info().writes, "{access:?} is a read");
+        self.pass().buffers.push(BufferUse {
+            buffer: buffer.id,
+            access,
+        });
+        self
+    }
+
+    /// Sets what the pass records; called once the graph's barriers are in place.
+    pub fn record(mut self, f: impl FnOnce(&mut PassContext<'_>) -> crate::Result<()> + 'a) {
+        self.pass().record = Some(Box::new(f));
+    }
+}

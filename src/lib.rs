@@ -1,0 +1,30 @@
+//! blackhole: a Schwarzschild black-hole renderer on explicit Vulkan.
+//!
+//! Layers, from the bottom: [`vk`] wraps Vulkan (one concept per file),
+//! [`graph`] schedules passes and derives every barrier, [`passes`] adds
+//! effects to a graph, [`renderer`] runs frames, [`output`] writes files.
+//! [`scene`] is the TOML scene schema; [`physics`] is the f64 CPU reference.
+
+#![warn(
+    clippy::all,
+    rust_2018_idioms,
+    unsafe_op_in_unsafe_fn,
+    clippy::undocumented_unsafe_blocks
+)]
+#![allow(clippy::too_many_arguments)]
+
+pub mod error;
+pub mod graph;
+pub mod output;
+pub mod passes;
+pub mod profile;
+pub mod renderer;
+pub mod scene;
+pub mod shaders;
+pub mod vk;
+
+pub use error::{Error, Result};
+pub use renderer::{
+    Frame, FrameTimings, OutputKind, PassTiming, Pixels, Renderer, RendererOptions,
+};
+pub use scene::Scene;

@@ -1,0 +1,148 @@
+//! The `blackhole` command line: `render` (offscreen stills).
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+use blackhole::output::{self, FileFormat};
+use blackhole::{Error, Renderer, RendererOptions, Scene};
+use clap::{Parser, Subcommand};
+
+#[derive(Parser)]
+#[command(
+    name = "blackhole",
+    version,
+    about = "A Schwarzschild black-hole renderer on Vulkan"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Render a still offscreen to PNG (8-bit sRGB, tone-mapped) or EXR (linear HDR).
+    #[command(after_help = presets_help())]
+    Render {
+        /// Scene TOML file or built-in preset name (default: the built-in default scene).
+        #[arg(long)]
+        scene: Option<String>,
+        /// Image width in pixels.
+        #[arg(long, default_value_t = 1280, value_parser = clap::value_parser!(u32).range(1..=16384))]
+        width: u32,
+        /// Image height in pixels.
+        #[arg(long, default_value_t = 720, value_parser = clap::value_parser!(u32).range(1..=16384))]
+        height: u32,
+        /// Output file; the extension chooses the format (.png or .exr).
+        #[arg(long, default_value = "blackhole.png")]
+        out: PathBuf,
+    },
+    /// Render N frames and print GPU time per pass (median, p95, share of frame).
+    #[command(after_help = presets_help())]
+    Profile {
+        /// Scene TOML file or built-in preset name (default: the built-in default scene).
+        #[arg(long)]
+        scene: Option<String>,
+        /// Image width in pixels.
+        #[arg(long, default_value_t = 1280, value_parser = clap::value_parser!(u32).range(1..=16384))]
+        width: u32,
+        /// Image height in pixels.
+        #[arg(long, default_value_t = 720, value_parser = clap::value_parser!(u32).range(1..=16384))]
+        height: u32,
+        /// Frames to time (after one warm-up frame).
+        #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u32).range(1..=100000))]
+        frames: u32,
+        /// Also write the figures as JSON.
+        #[arg(long)]
+        json: Option<PathBuf>,
+    },
+}
+
+fn presets_help() -> String {
+    let lines: Vec<String> = blackhole::scene::PRESETS
+        .iter()
+        .map(|(name, what, _)| format!("  {name:<12} {what}"))
+        .collect();
+    format!("Built-in presets (--scene NAME):\n{}", lines.join("\n"))
+}
+
+fn main() -> ExitCode {
+    env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("blackhole=info"))
+        .format_timestamp(None)
+        .init();
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(e.exit_code() as u8)
+        }
+    }
+}
+
+fn run(cli: Cli) -> Result<ExitCode, Error> {
+    match cli.command {
+        Command::Render {
+            scene,
+            width,
+            height,
+            out,
+        } => {
+            // Check everything the user gave before touching the GPU.
+            let format = FileFormat::from_path(&out)?;
+            let scene = match scene {
+                Some(s) => Scene::load(&s)?,
+                None => Scene::builtin_default()?,
+            };
+            let mut renderer = Renderer::new(RendererOptions::default())?;
+            let start = Instant::now();
+            let frame = renderer.render(&scene, width, height, format.output_kind())?;
+            output::write_frame(&frame, &out, format)?;
+            log::info!("GPU: {}", frame.timings);
+            println!(
+                "wrote {} ({width}x{height}) in {:.0} ms on {}",
+                out.display(),
+                start.elapsed().as_secs_f64() * 1e3,
+                renderer.device_name()
+            );
+            Ok(validation_verdict(&renderer))
+        }
+        Command::Profile {
+            scene,
+            width,
+            height,
+            frames,
+            json,
+        } => {
+            let scene = match scene {
+                Some(s) => Scene::load(&s)?,
+                None => Scene::builtin_default()?,
+            };
+            let mut renderer = Renderer::new(RendererOptions::default())?;
+            let report = blackhole::profile::run(&mut renderer, &scene, width, height, frames)?;
+            print!("{}", report.table());
+            if let Some(path) = json {
+                output::write_atomically(&path, |tmp| {
+                    std::fs::write(tmp, report.to_json()).map_err(|source| Error::Io {
+                        path: path.clone(),
+                        source,
+                    })
+                })?;
+            }
+            Ok(validation_verdict(&renderer))
+        }
+    }
+}
+
+/// With validation on, any error or warning fails the run (exit 3).
+fn validation_verdict(renderer: &Renderer) -> ExitCode {
+    let (errors, warnings) = renderer.validation_counts();
+    if renderer.validation_enabled() {
+        eprintln!("validation: {errors} errors, {warnings} warnings");
+    }
+    if errors + warnings > 0 {
+        ExitCode::from(3)
+    } else {
+        ExitCode::SUCCESS
+    }
+}

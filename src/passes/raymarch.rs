@@ -1,0 +1,125 @@
+//! The ray march: one compute invocation per pixel follows the camera ray
+//! along the Schwarzschild light-path equation (DESIGN.md section 2) with an
+//! adaptive Dormand-Prince 5(4) integrator, and writes linear HDR radiance.
+//!
+//! Technique: the spatial-orbit form x'' = -1.5 rs h^2 x / r^5 of the null
+//! geodesic equation (see e.g. the "Photons and black holes" derivation from
+//! Binet's equation u'' + u = 1.5 rs u^2), integrated in Cartesian coordinates
+//! so several holes can be summed.
+
+use ash::vk;
+use bytemuck::{Pod, Zeroable};
+
+use super::{Pipelines, groups};
+use crate::graph::{Graph, ImageDesc, ImageHandle, Mips};
+use crate::scene::{DiskKind, MAX_HOLES, Scene, SkyKind};
+use crate::vk::{Access, Descriptor, bind_compute};
+
+/// HDR format written by the ray march.
+pub const HDR_FORMAT: vk::Format = vk::Format::R16G16B16A16_SFLOAT;
+
+/// Uniform block of the ray march. Mirrors `RaymarchParams` in
+/// shaders/include/params.glsl (std140; every member a 16-byte vec4).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct RaymarchParams {
+    pub cam_pos: [f32; 4],
+    pub cam_right: [f32; 4],
+    pub cam_up: [f32; 4],
+    pub cam_fwd: [f32; 4],
+    pub disk_normal: [f32; 4],
+    pub disk: [f32; 4],
+    pub sky: [f32; 4],
+    pub integ: [f32; 4],
+    pub counts: [u32; 4],
+    pub holes: [[f32; 4]; MAX_HOLES],
+}
+
+fn v4(v: glam::DVec3, w: f64) -> [f32; 4] {
+    [v.x as f32, v.y as f32, v.z as f32, w as f32]
+}
+
+impl RaymarchParams {
+    /// Fills the block from a scene for a `width` x `height` image.
+    pub fn new(scene: &Scene, width: u32, height: u32) -> Self {
+        let f = scene.camera.frame();
+        let mut holes = [[0.0f32; 4]; MAX_HOLES];
+        for (slot, h) in holes.iter_mut().zip(&scene.black_holes) {
+            *slot = v4(glam::DVec3::from(h.position), h.rs);
+        }
+        let disk_kind = match scene.disk.kind {
+            DiskKind::Thin => 1.0,
+            DiskKind::Volumetric | DiskKind::None => 0.0,
+        };
+        let sky_kind = match scene.sky.kind {
+            SkyKind::Black => 0.0,
+            SkyKind::Checker => 1.0,
+        };
+        RaymarchParams {
+            cam_pos: v4(f.position, f.tan_half_fov),
+            cam_right: v4(f.right, f64::from(width) / f64::from(height)),
+            cam_up: v4(f.up, 0.0),
+            cam_fwd: v4(f.forward, 0.0),
+            disk_normal: v4(glam::DVec3::from(scene.disk.normal).normalize(), disk_kind),
+            disk: [
+                scene.disk.inner_radius as f32,
+                scene.disk.outer_radius as f32,
+                scene.disk.brightness as f32,
+                0.0,
+            ],
+            sky: [
+                sky_kind,
+                scene.sky.squares as f32,
+                scene.sky.brightness as f32,
+                0.0,
+            ],
+            integ: [
+                scene.quality.tolerance as f32,
+                scene.escape_radius() as f32,
+                1.0,
+                0.0,
+            ],
+            counts: [
+                scene.black_holes.len().min(MAX_HOLES) as u32,
+                width,
+                height,
+                scene.quality.steps,
+            ],
+            holes,
+        }
+    }
+}
+
+/// Adds the ray march; returns the HDR image it writes.
+pub fn add_raymarch<'a>(
+    graph: &mut Graph<'a>,
+    pipelines: &'a Pipelines,
+    params: vk::Buffer,
+    width: u32,
+    height: u32,
+) -> ImageHandle {
+    let mut hdr = graph.create_image("hdr", ImageDesc::new_2d(HDR_FORMAT, width, height));
+    let out = hdr.clone();
+    graph
+        .add_pass("raymarch")
+        .write(&mut hdr, Access::ComputeStorageWrite, Mips::ALL)
+        .record(move |ctx| {
+            bind_compute(
+                ctx.gpu,
+                ctx.cmd,
+                &pipelines.raymarch,
+                &[
+                    Descriptor::StorageImage(ctx.view(&out, 0)),
+                    Descriptor::UniformBuffer(params),
+                ],
+            )?;
+            // SAFETY: the pipeline and its descriptors are bound on a recording buffer.
+            unsafe {
+                ctx.gpu
+                    .device
+                    .cmd_dispatch(ctx.cmd, groups(width, 8), groups(height, 8), 1)
+            };
+            Ok(())
+        });
+    hdr
+}

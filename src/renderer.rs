@@ -1,0 +1,256 @@
+//! The offscreen renderer: owns the device, the pipelines and the per-frame
+//! resources, builds the frame graph for a request, runs it and reads it back.
+
+use std::sync::Arc;
+
+use ash::vk;
+use gpu_allocator::MemoryLocation;
+
+use crate::graph::{self, Graph, TransientPool};
+use crate::passes::{self, Pipelines, composite, copy, raymarch};
+use crate::scene::Scene;
+use crate::vk::{Access, Buffer, CommandContext, Gpu, TimestampPool, Validation};
+use crate::{Error, Result};
+
+/// What a render produces.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OutputKind {
+    /// Tone-mapped, sRGB-encoded 8-bit RGBA.
+    Ldr,
+    /// Linear HDR RGBA, before tone mapping.
+    Hdr,
+}
+
+/// Pixels read back from the GPU, row 0 at the top.
+#[derive(Clone, Debug)]
+pub enum Pixels {
+    Rgba8(Vec<u8>),
+    Rgba32F(Vec<f32>),
+}
+
+/// One rendered frame.
+#[derive(Clone, Debug)]
+pub struct Frame {
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Pixels,
+    pub timings: FrameTimings,
+}
+
+/// GPU time of one pass.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PassTiming {
+    pub name: String,
+    pub ms: f64,
+}
+
+/// GPU time per pass of one frame (empty when the device has no timestamps).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct FrameTimings {
+    pub passes: Vec<PassTiming>,
+    /// From the first pass's start to the last pass's end.
+    pub frame_ms: f64,
+}
+
+impl std::fmt::Display for FrameTimings {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let parts: Vec<String> = self
+            .passes
+            .iter()
+            .map(|p| format!("{} {:.2} ms", p.name, p.ms))
+            .collect();
+        write!(f, "{} (frame {:.2} ms)", parts.join(", "), self.frame_ms)
+    }
+}
+
+/// Options for creating a [`Renderer`].
+#[derive(Clone, Copy, Debug)]
+pub struct RendererOptions {
+    pub validation: Validation,
+}
+
+impl Default for RendererOptions {
+    fn default() -> Self {
+        RendererOptions {
+            validation: Validation::from_env(),
+        }
+    }
+}
+
+/// Most passes a frame can time.
+const MAX_TIMED_PASSES: u32 = 64;
+
+/// The offscreen renderer. Fields drop in declaration order: per-frame
+/// resources, then pipelines, then (through the last `Arc`) the device.
+pub struct Renderer {
+    transients: TransientPool,
+    readback: Option<Buffer>,
+    params: Buffer,
+    timestamps: Option<TimestampPool>,
+    commands: CommandContext,
+    pipelines: Pipelines,
+    gpu: Arc<Gpu>,
+}
+
+impl Renderer {
+    /// Opens the device and builds the pipelines.
+    pub fn new(options: RendererOptions) -> Result<Self> {
+        let gpu = Gpu::new(options.validation)?;
+        let pipelines = Pipelines::new(&gpu)?;
+        let commands = CommandContext::new(&gpu)?;
+        let timestamps = TimestampPool::new(&gpu, 2 * MAX_TIMED_PASSES)?;
+        let params = Buffer::new(
+            &gpu,
+            "raymarch params",
+            std::mem::size_of::<raymarch::RaymarchParams>() as u64,
+            vk::BufferUsageFlags::UNIFORM_BUFFER,
+            MemoryLocation::CpuToGpu,
+        )?;
+        Ok(Renderer {
+            transients: TransientPool::new(&gpu),
+            readback: None,
+            params,
+            timestamps,
+            commands,
+            pipelines,
+            gpu,
+        })
+    }
+
+    /// The device in use.
+    pub fn device_name(&self) -> &str {
+        &self.gpu.info.name
+    }
+
+    /// Validation errors and warnings reported so far (0, 0 when validation is off).
+    pub fn validation_counts(&self) -> (u32, u32) {
+        self.gpu.validation_counts()
+    }
+
+    /// Whether the validation layer is active.
+    pub fn validation_enabled(&self) -> bool {
+        self.gpu.instance.validation_enabled
+    }
+
+    /// Renders `scene` at `width` x `height` and reads the result back.
+    pub fn render(
+        &mut self,
+        scene: &Scene,
+        width: u32,
+        height: u32,
+        kind: OutputKind,
+    ) -> Result<Frame> {
+        let max = self.gpu_max_dimension();
+        if width == 0 || height == 0 || width > max || height > max {
+            return Err(Error::Usage(format!(
+                "image size {width}x{height} is outside 1..={max} per side on {}",
+                self.gpu.info.name
+            )));
+        }
+        let params = raymarch::RaymarchParams::new(scene, width, height);
+        self.params
+            .mapped_mut()?
+            .copy_from_slice(bytemuck::bytes_of(&params));
+
+        let texel_bytes: u64 = match kind {
+            OutputKind::Ldr => 4,
+            OutputKind::Hdr => 8,
+        };
+        let needed = u64::from(width) * u64::from(height) * texel_bytes;
+        if self.readback.as_ref().is_none_or(|b| b.size < needed) {
+            self.readback = None;
+            self.readback = Some(Buffer::new(
+                &self.gpu,
+                "readback",
+                needed,
+                vk::BufferUsageFlags::TRANSFER_DST,
+                MemoryLocation::GpuToCpu,
+            )?);
+        }
+        let readback = self
+            .readback
+            .as_ref()
+            .ok_or_else(|| Error::Other("readback buffer missing".into()))?;
+
+        // Build the frame graph.
+        let pipelines = &self.pipelines;
+        let mut g = Graph::new();
+        let mut out_buf = g.import_buffer(
+            "readback",
+            readback.binding(),
+            Access::Nothing,
+            Some(Access::HostRead),
+        );
+        let hdr =
+            passes::raymarch::add_raymarch(&mut g, pipelines, self.params.buffer, width, height);
+        let result = match kind {
+            OutputKind::Ldr => {
+                composite::add_composite(&mut g, pipelines, &hdr, scene.post.exposure_ev as f32)
+            }
+            OutputKind::Hdr => hdr,
+        };
+        copy::add_copy_to_buffer(&mut g, &result, &mut out_buf);
+        let compiled = g.compile()?;
+
+        let cmd = self.commands.begin()?;
+        let names = graph::execute::execute(
+            g,
+            &compiled,
+            &self.gpu,
+            cmd,
+            &mut self.transients,
+            self.timestamps.as_ref(),
+        )?;
+        self.commands.submit_and_wait()?;
+
+        let timings = self.read_timings(&names)?;
+        let bytes = &readback.mapped()?[..needed as usize];
+        let pixels = match kind {
+            OutputKind::Ldr => Pixels::Rgba8(bytes.to_vec()),
+            OutputKind::Hdr => Pixels::Rgba32F(
+                bytes
+                    .chunks_exact(2)
+                    .map(|c| half::f16::from_le_bytes([c[0], c[1]]).to_f32())
+                    .collect(),
+            ),
+        };
+        Ok(Frame {
+            width,
+            height,
+            pixels,
+            timings,
+        })
+    }
+
+    fn read_timings(&self, names: &[String]) -> Result<FrameTimings> {
+        let Some(ts) = &self.timestamps else {
+            return Ok(FrameTimings::default());
+        };
+        if graph::execute::timestamp_count(names.len()) > ts.capacity {
+            return Ok(FrameTimings::default());
+        }
+        let ns = ts.read_ns(graph::execute::timestamp_count(names.len()))?;
+        let passes = names
+            .iter()
+            .enumerate()
+            .map(|(i, n)| PassTiming {
+                name: n.clone(),
+                ms: (ns[2 * i + 1] - ns[2 * i]) * 1e-6,
+            })
+            .collect();
+        let frame_ms = ns.last().copied().unwrap_or(0.0) * 1e-6;
+        Ok(FrameTimings { passes, frame_ms })
+    }
+
+    fn gpu_max_dimension(&self) -> u32 {
+        // SAFETY: the physical device belongs to the live instance.
+        unsafe {
+            self.gpu
+                .instance
+                .instance
+                .get_physical_device_properties(self.gpu.physical)
+        }
+        .limits
+        .max_image_dimension2_d
+    }
+}

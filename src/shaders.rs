@@ -1,0 +1,6 @@
+//! SPIR-V compiled by build.rs from `shaders/*.comp`, embedded in the binary.
+
+/// The ray march (`shaders/raymarch.comp`).
+pub const RAYMARCH: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/raymarch.comp.spv"));
+/// The composite (`shaders/composite.comp`).
+pub const COMPOSITE: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/composite.comp.spv"));

@@ -1,0 +1,114 @@
+//! One command pool, one command buffer and its fence: the offscreen renderer
+//! records a frame, submits it and waits. (The windowed demo keeps one of these
+//! per frame in flight.)
+
+use std::sync::Arc;
+
+use ash::vk;
+
+use super::Gpu;
+use crate::Result;
+use crate::error::VkContext;
+
+/// A resettable command buffer with the fence that tells when it is done.
+pub struct CommandContext {
+    gpu: Arc<Gpu>,
+    pool: vk::CommandPool,
+    pub cmd: vk::CommandBuffer,
+    fence: vk::Fence,
+}
+
+impl CommandContext {
+    /// Creates the pool, buffer and (signalled) fence.
+    pub fn new(gpu: &Arc<Gpu>) -> Result<Self> {
+        let d = &gpu.device;
+        let mut this = CommandContext {
+            gpu: gpu.clone(),
+            pool: vk::CommandPool::null(),
+            cmd: vk::CommandBuffer::null(),
+            fence: vk::Fence::null(),
+        };
+        // SAFETY: valid device; `this` owns each handle as soon as it exists.
+        unsafe {
+            this.pool = d
+                .create_command_pool(
+                    &vk::CommandPoolCreateInfo::default()
+                        .queue_family_index(gpu.queue_family)
+                        .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER),
+                    None,
+                )
+                .ctx(|| "creating the command pool".into())?;
+            this.cmd = d
+                .allocate_command_buffers(
+                    &vk::CommandBufferAllocateInfo::default()
+                        .command_pool(this.pool)
+                        .level(vk::CommandBufferLevel::PRIMARY)
+                        .command_buffer_count(1),
+                )
+                .ctx(|| "allocating the command buffer".into())?
+                .into_iter()
+                .next()
+                .unwrap_or_default();
+            this.fence = d
+                .create_fence(
+                    &vk::FenceCreateInfo::default().flags(vk::FenceCreateFlags::SIGNALED),
+                    None,
+                )
+                .ctx(|| "creating the frame fence".into())?;
+        }
+        Ok(this)
+    }
+
+    /// Waits for the previous submission, then begins recording.
+    pub fn begin(&mut self) -> Result<vk::CommandBuffer> {
+        let d = &self.gpu.device;
+        // SAFETY: the fence and buffer belong to this context.
+        unsafe {
+            d.wait_for_fences(&[self.fence], true, u64::MAX)
+                .ctx(|| "waiting for the previous frame".into())?;
+            d.reset_command_buffer(self.cmd, vk::CommandBufferResetFlags::empty())
+                .ctx(|| "resetting the command buffer".into())?;
+            d.begin_command_buffer(
+                self.cmd,
+                &vk::CommandBufferBeginInfo::default()
+                    .flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
+            )
+            .ctx(|| "beginning the command buffer".into())?;
+        }
+        Ok(self.cmd)
+    }
+
+    /// Ends recording, submits, and waits for the GPU to finish.
+    pub fn submit_and_wait(&mut self) -> Result<()> {
+        let d = &self.gpu.device;
+        // SAFETY: the buffer is recording; the fence is ours.
+        unsafe {
+            d.end_command_buffer(self.cmd)
+                .ctx(|| "ending the command buffer".into())?;
+            d.reset_fences(&[self.fence])
+                .ctx(|| "resetting the frame fence".into())?;
+        }
+        let cmd_infos = [vk::CommandBufferSubmitInfo::default().command_buffer(self.cmd)];
+        let submit = [vk::SubmitInfo2::default().command_buffer_infos(&cmd_infos)];
+        self.gpu.queue_submit2(&submit, self.fence)?;
+        // SAFETY: as above.
+        unsafe { d.wait_for_fences(&[self.fence], true, u64::MAX) }
+            .ctx(|| "waiting for the frame to finish".into())
+    }
+}
+
+impl Drop for CommandContext {
+    fn drop(&mut self) {
+        // SAFETY: wait so nothing in flight references the buffer, then destroy.
+        unsafe {
+            let d = &self.gpu.device;
+            if self.fence != vk::Fence::null() {
+                let _ = d.wait_for_fences(&[self.fence], true, u64::MAX);
+                d.destroy_fence(self.fence, None);
+            }
+            if self.pool != vk::CommandPool::null() {
+                d.destroy_command_pool(self.pool, None);
+            }
+        }
+    }
+}

@@ -1,0 +1,157 @@
+//! Images, their views and samplers.
+
+use std::sync::Arc;
+
+use ash::vk;
+use gpu_allocator::MemoryLocation;
+use gpu_allocator::vulkan::Allocation;
+
+use super::{Gpu, memory};
+use crate::Result;
+use crate::error::VkContext;
+use crate::graph::{ImageBinding, ImageDesc};
+
+/// A 2-D colour image with one view per mip level and one of all levels.
+pub struct Image {
+    gpu: Arc<Gpu>,
+    pub image: vk::Image,
+    pub desc: ImageDesc,
+    pub usage: vk::ImageUsageFlags,
+    pub mip_views: Vec<vk::ImageView>,
+    pub full_view: vk::ImageView,
+    allocation: Option<Allocation>,
+    pub name: String,
+}
+
+impl Image {
+    /// Creates a device-local image.
+    pub fn new(
+        gpu: &Arc<Gpu>,
+        name: &str,
+        desc: ImageDesc,
+        usage: vk::ImageUsageFlags,
+    ) -> Result<Self> {
+        let d = &gpu.device;
+        let info = vk::ImageCreateInfo::default()
+            .image_type(vk::ImageType::TYPE_2D)
+            .format(desc.format)
+            .extent(vk::Extent3D {
+                width: desc.width,
+                height: desc.height,
+                depth: 1,
+            })
+            .mip_levels(desc.mip_levels)
+            .array_layers(1)
+            .samples(vk::SampleCountFlags::TYPE_1)
+            .tiling(vk::ImageTiling::OPTIMAL)
+            .usage(usage)
+            .sharing_mode(vk::SharingMode::EXCLUSIVE)
+            .initial_layout(vk::ImageLayout::UNDEFINED);
+        // SAFETY: valid device and create info.
+        let image = unsafe { d.create_image(&info, None) }
+            .ctx(|| format!("creating image `{name}` ({}x{})", desc.width, desc.height))?;
+        // From here on `this` owns every handle, so an early return cleans up.
+        let mut this = Image {
+            gpu: gpu.clone(),
+            image,
+            desc,
+            usage,
+            mip_views: Vec::new(),
+            full_view: vk::ImageView::null(),
+            allocation: None,
+            name: name.to_owned(),
+        };
+        gpu.set_name(image, name);
+        // SAFETY: image belongs to this device.
+        let reqs = unsafe { d.get_image_memory_requirements(image) };
+        let allocation = memory::allocate(gpu, name, reqs, MemoryLocation::GpuOnly, false)?;
+        // SAFETY: fresh allocation satisfying the image's requirements.
+        unsafe { d.bind_image_memory(image, allocation.memory(), allocation.offset()) }
+            .ctx(|| format!("binding memory of image `{name}`"))?;
+        this.allocation = Some(allocation);
+        this.full_view = this.make_view(0, desc.mip_levels)?;
+        for level in 0..desc.mip_levels {
+            let v = this.make_view(level, 1)?;
+            this.mip_views.push(v);
+        }
+        Ok(this)
+    }
+
+    fn make_view(&self, base: u32, count: u32) -> Result<vk::ImageView> {
+        let info = vk::ImageViewCreateInfo::default()
+            .image(self.image)
+            .view_type(vk::ImageViewType::TYPE_2D)
+            .format(self.desc.format)
+            .subresource_range(vk::ImageSubresourceRange {
+                aspect_mask: vk::ImageAspectFlags::COLOR,
+                base_mip_level: base,
+                level_count: count,
+                base_array_layer: 0,
+                layer_count: 1,
+            });
+        // SAFETY: the image is alive and bound.
+        unsafe { self.gpu.device.create_image_view(&info, None) }
+            .ctx(|| format!("creating image `{}` mip {base} view", self.name))
+    }
+
+    /// The handles the frame graph needs to import this image.
+    pub fn binding(&self) -> ImageBinding {
+        ImageBinding {
+            image: self.image,
+            mip_views: self.mip_views.clone(),
+            full_view: self.full_view,
+        }
+    }
+}
+
+impl Drop for Image {
+    fn drop(&mut self) {
+        // SAFETY: owners drop images only after the fences of frames using them.
+        unsafe {
+            for v in self.mip_views.drain(..) {
+                self.gpu.device.destroy_image_view(v, None);
+            }
+            if self.full_view != vk::ImageView::null() {
+                self.gpu.device.destroy_image_view(self.full_view, None);
+            }
+            self.gpu.device.destroy_image(self.image, None);
+        }
+        if let Some(a) = self.allocation.take() {
+            memory::free(&self.gpu, a);
+        }
+    }
+}
+
+/// A sampler, destroyed with its owner.
+pub struct Sampler {
+    gpu: Arc<Gpu>,
+    pub sampler: vk::Sampler,
+}
+
+impl Sampler {
+    /// Linear filtering, clamp to edge, all mips.
+    pub fn linear_clamp(gpu: &Arc<Gpu>) -> Result<Self> {
+        let info = vk::SamplerCreateInfo::default()
+            .mag_filter(vk::Filter::LINEAR)
+            .min_filter(vk::Filter::LINEAR)
+            .mipmap_mode(vk::SamplerMipmapMode::LINEAR)
+            .address_mode_u(vk::SamplerAddressMode::CLAMP_TO_EDGE)
+            .address_mode_v(vk::SamplerAddressMode::CLAMP_TO_EDGE)
+            .address_mode_w(vk::SamplerAddressMode::CLAMP_TO_EDGE)
+            .max_lod(vk::LOD_CLAMP_NONE);
+        // SAFETY: valid device.
+        let sampler = unsafe { gpu.device.create_sampler(&info, None) }
+            .ctx(|| "creating the linear sampler".into())?;
+        Ok(Sampler {
+            gpu: gpu.clone(),
+            sampler,
+        })
+    }
+}
+
+impl Drop for Sampler {
+    fn drop(&mut self) {
+        // SAFETY: owners outlive every frame that uses the sampler.
+        unsafe { self.gpu.device.destroy_sampler(self.sampler, None) };
+    }
+}

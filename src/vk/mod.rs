@@ -1,0 +1,23 @@
+//! Thin ash wrappers, one Vulkan concept per file. Each object has one owner
+//! that destroys it in `Drop`; see [`device`] for the teardown order.
+
+pub mod buffer;
+pub mod commands;
+pub mod descriptors;
+pub mod device;
+pub mod image;
+pub mod instance;
+pub mod memory;
+pub mod pipeline;
+pub mod sync;
+pub mod timestamps;
+
+pub use buffer::Buffer;
+pub use commands::CommandContext;
+pub use descriptors::{Descriptor, bind_compute, push_constants};
+pub use device::{DeviceInfo, Gpu};
+pub use image::{Image, Sampler};
+pub use instance::Validation;
+pub use pipeline::{BindingKind, ComputePipeline};
+pub use sync::{Access, AccessInfo};
+pub use timestamps::TimestampPool;

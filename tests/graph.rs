@@ -1,0 +1,347 @@
+//! Frame-graph compilation, tested without a device. Each test is named after
+//! the hazard it covers.
+
+use ash::vk;
+use blackhole::graph::{BufferBinding, Graph, ImageBinding, ImageDesc, ImageHandle, Mips};
+use blackhole::vk::Access;
+
+use vk::AccessFlags2 as A;
+use vk::ImageLayout as L;
+use vk::PipelineStageFlags2 as S;
+
+const FMT: vk::Format = vk::Format::R16G16B16A16_SFLOAT;
+
+fn fake_image(levels: u32) -> ImageBinding {
+    ImageBinding {
+        image: vk::Image::null(),
+        mip_views: vec![vk::ImageView::null(); levels as usize],
+        full_view: vk::ImageView::null(),
+    }
+}
+
+fn fake_buffer() -> BufferBinding {
+    BufferBinding {
+        buffer: vk::Buffer::null(),
+        size: 1024,
+    }
+}
+
+/// A final pass that reads `img` (mips) and writes an exported buffer, so the
+/// passes before it stay alive.
+fn consume(g: &mut Graph<'_>, img: &ImageHandle, mips: Mips) {
+    let mut out = g.import_buffer(
+        "out",
+        fake_buffer(),
+        Access::Nothing,
+        Some(Access::HostRead),
+    );
+    g.add_pass("consume")
+        .read(img, Access::ComputeSampledRead, mips)
+        .write_buffer(&mut out, Access::ComputeStorageWrite);
+}
+
+#[test]
+fn read_after_write_makes_the_storage_write_visible_and_changes_layout() {
+    let mut g = Graph::new();
+    let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 64, 64));
+    g.add_pass("write")
+        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    consume(&mut g, &img, Mips::ALL);
+    let c = g.compile().unwrap();
+    assert_eq!(c.order, vec![0, 1]);
+    // First use: undefined -> general, nothing to wait for.
+    let first = &c.before[0].images;
+    assert_eq!(first.len(), 1);
+    assert_eq!(
+        (first[0].old_layout, first[0].new_layout),
+        (L::UNDEFINED, L::GENERAL)
+    );
+    assert_eq!(first[0].src_stage, S::NONE);
+    // Read after write.
+    let b = &c.before[1].images;
+    assert_eq!(b.len(), 1);
+    assert_eq!(b[0].src_stage, S::COMPUTE_SHADER);
+    assert_eq!(b[0].src_access, A::SHADER_STORAGE_WRITE);
+    assert_eq!(b[0].dst_stage, S::COMPUTE_SHADER);
+    assert_eq!(b[0].dst_access, A::SHADER_SAMPLED_READ);
+    assert_eq!(
+        (b[0].old_layout, b[0].new_layout),
+        (L::GENERAL, L::SHADER_READ_ONLY_OPTIMAL)
+    );
+}
+
+#[test]
+fn write_after_read_waits_for_the_reader_without_a_memory_dependency() {
+    let mut g = Graph::new();
+    let mut img = g.import_image(
+        "a",
+        ImageDesc::new_2d(FMT, 8, 8),
+        fake_image(1),
+        Access::ComputeStorageRead,
+        Some(Access::ComputeStorageRead),
+    );
+    g.add_pass("write")
+        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    let c = g.compile().unwrap();
+    let b = &c.before[0].images;
+    assert_eq!(b.len(), 1);
+    assert_eq!(
+        b[0].src_stage,
+        S::COMPUTE_SHADER,
+        "waits for the earlier read"
+    );
+    assert_eq!(
+        b[0].src_access,
+        A::NONE,
+        "a read has nothing to make available"
+    );
+    assert_eq!(b[0].dst_access, A::SHADER_STORAGE_WRITE);
+    assert_eq!((b[0].old_layout, b[0].new_layout), (L::GENERAL, L::GENERAL));
+    // And the final state: readable again, made visible.
+    let after = &c.after.images;
+    assert_eq!(after.len(), 1);
+    assert_eq!(after[0].src_access, A::SHADER_STORAGE_WRITE);
+    assert_eq!(after[0].dst_access, A::SHADER_STORAGE_READ);
+}
+
+#[test]
+fn write_after_write_orders_the_two_writes() {
+    let mut g = Graph::new();
+    let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
+    g.add_pass("first")
+        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    g.add_pass("second")
+        .write(&mut img, Access::ComputeStorageReadWrite, Mips::ALL);
+    consume(&mut g, &img, Mips::ALL);
+    let c = g.compile().unwrap();
+    assert_eq!(c.order, vec![0, 1, 2]);
+    let b = &c.before[1].images;
+    assert_eq!(b.len(), 1);
+    assert_eq!(b[0].src_stage, S::COMPUTE_SHADER);
+    assert_eq!(b[0].src_access, A::SHADER_STORAGE_WRITE);
+    assert_eq!(
+        b[0].dst_access,
+        A::SHADER_STORAGE_READ | A::SHADER_STORAGE_WRITE
+    );
+    assert_eq!((b[0].old_layout, b[0].new_layout), (L::GENERAL, L::GENERAL));
+}
+
+#[test]
+fn second_read_of_a_visible_write_needs_no_barrier() {
+    let mut g = Graph::new();
+    let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
+    let mut other = g.create_image("b", ImageDesc::new_2d(FMT, 8, 8));
+    g.add_pass("write")
+        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    g.add_pass("read1")
+        .read(&img, Access::ComputeSampledRead, Mips::ALL)
+        .write(&mut other, Access::ComputeStorageWrite, Mips::ALL);
+    let mut out = g.import_buffer(
+        "out",
+        fake_buffer(),
+        Access::Nothing,
+        Some(Access::HostRead),
+    );
+    g.add_pass("read2")
+        .read(&img, Access::ComputeSampledRead, Mips::ALL)
+        .read(&other, Access::ComputeSampledRead, Mips::ALL)
+        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    let c = g.compile().unwrap();
+    assert_eq!(c.order, vec![0, 1, 2]);
+    let img_barriers: Vec<_> = c.before[2].images.iter().filter(|b| b.image == 0).collect();
+    assert!(img_barriers.is_empty(), "{img_barriers:?}");
+}
+
+#[test]
+fn mip_chain_reading_n_writing_n_plus_1_gets_one_barrier_per_level() {
+    const LEVELS: u32 = 6;
+    let mut g = Graph::new();
+    let mut img = g.create_image("chain", ImageDesc::new_2d(FMT, 256, 256).with_mips(LEVELS));
+    assert_eq!(img.desc.mip_levels, LEVELS);
+    g.add_pass("mip0")
+        .write(&mut img, Access::ComputeStorageWrite, Mips::one(0));
+    for n in 0..LEVELS - 1 {
+        let src = img.clone();
+        g.add_pass(&format!("down{n}"))
+            .read(&src, Access::ComputeSampledRead, Mips::one(n))
+            .write(&mut img, Access::ComputeStorageWrite, Mips::one(n + 1));
+    }
+    consume(&mut g, &img, Mips::one(LEVELS - 1));
+    let c = g.compile().unwrap();
+    assert_eq!(c.order.len(), LEVELS as usize + 1);
+
+    // mip0 pass: only level 0 goes undefined -> general.
+    let b0 = &c.before[0].images;
+    assert_eq!(b0.len(), 1);
+    assert_eq!((b0[0].base_mip, b0[0].mip_count), (0, 1));
+
+    for n in 0..LEVELS - 1 {
+        let b = &c.before[1 + n as usize].images;
+        assert_eq!(b.len(), 2, "down{n}: {b:?}");
+        for barrier in b {
+            assert_eq!(barrier.mip_count, 1, "one level per barrier");
+        }
+        let read = b
+            .iter()
+            .find(|x| x.base_mip == n)
+            .expect("barrier on the level read");
+        assert_eq!(
+            (read.old_layout, read.new_layout),
+            (L::GENERAL, L::SHADER_READ_ONLY_OPTIMAL)
+        );
+        assert_eq!(read.src_access, A::SHADER_STORAGE_WRITE);
+        assert_eq!(read.dst_access, A::SHADER_SAMPLED_READ);
+        let write = b
+            .iter()
+            .find(|x| x.base_mip == n + 1)
+            .expect("barrier on the level written");
+        assert_eq!(
+            (write.old_layout, write.new_layout),
+            (L::UNDEFINED, L::GENERAL)
+        );
+        // No other level is touched.
+        assert!(b.iter().all(|x| x.base_mip == n || x.base_mip == n + 1));
+    }
+    // The consumer reads the last level: only that one transitions.
+    let last = &c.before[LEVELS as usize].images;
+    assert_eq!(last.len(), 1);
+    assert_eq!(last[0].base_mip, LEVELS - 1);
+    assert_eq!(last[0].new_layout, L::SHADER_READ_ONLY_OPTIMAL);
+}
+
+#[test]
+fn adjacent_levels_with_identical_barriers_merge_into_one_range() {
+    let mut g = Graph::new();
+    let mut img = g.create_image("m", ImageDesc::new_2d(FMT, 64, 64).with_mips(6));
+    g.add_pass("all")
+        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    consume(&mut g, &img, Mips::ALL);
+    let c = g.compile().unwrap();
+    assert_eq!(c.before[0].images.len(), 1);
+    assert_eq!(
+        (
+            c.before[0].images[0].base_mip,
+            c.before[0].images[0].mip_count
+        ),
+        (0, 6)
+    );
+    assert_eq!(c.before[1].images.len(), 1);
+    assert_eq!(c.before[1].images[0].mip_count, 6);
+}
+
+#[test]
+fn pass_whose_output_nobody_reads_is_culled() {
+    let mut g = Graph::new();
+    let mut used = g.create_image("used", ImageDesc::new_2d(FMT, 8, 8));
+    let mut unused = g.create_image("unused", ImageDesc::new_2d(FMT, 8, 8));
+    g.add_pass("useful")
+        .write(&mut used, Access::ComputeStorageWrite, Mips::ALL);
+    g.add_pass("wasted")
+        .write(&mut unused, Access::ComputeStorageWrite, Mips::ALL);
+    consume(&mut g, &used, Mips::ALL);
+    let c = g.compile().unwrap();
+    assert_eq!(c.order, vec![0, 2]);
+    assert_eq!(c.culled, vec![1]);
+    assert_eq!(c.before.len(), 2);
+    // The culled pass's image gets no usage, so it is never created.
+    assert!(c.image_usage[1].is_empty());
+}
+
+#[test]
+fn culling_is_per_mip_level() {
+    let mut g = Graph::new();
+    let mut img = g.create_image("m", ImageDesc::new_2d(FMT, 64, 64).with_mips(2));
+    g.add_pass("level0")
+        .write(&mut img, Access::ComputeStorageWrite, Mips::one(0));
+    g.add_pass("level1")
+        .write(&mut img, Access::ComputeStorageWrite, Mips::one(1));
+    consume(&mut g, &img, Mips::one(0));
+    let c = g.compile().unwrap();
+    assert_eq!(c.order, vec![0, 2]);
+    assert_eq!(c.culled, vec![1]);
+}
+
+#[test]
+fn imported_image_is_left_in_its_requested_final_layout() {
+    let mut g = Graph::new();
+    let mut target = g.import_image(
+        "swapchain",
+        ImageDesc::new_2d(vk::Format::R8G8B8A8_UNORM, 32, 32),
+        fake_image(1),
+        Access::Nothing,
+        Some(Access::Present),
+    );
+    g.add_pass("draw")
+        .write(&mut target, Access::ComputeStorageWrite, Mips::ALL);
+    let c = g.compile().unwrap();
+    assert_eq!(c.order, vec![0], "a pass writing an exported image is kept");
+    let after = &c.after.images;
+    assert_eq!(after.len(), 1);
+    assert_eq!(
+        (after[0].old_layout, after[0].new_layout),
+        (L::GENERAL, L::PRESENT_SRC_KHR)
+    );
+    assert_eq!(after[0].src_access, A::SHADER_STORAGE_WRITE);
+}
+
+#[test]
+fn readback_buffer_is_made_visible_to_the_host() {
+    let mut g = Graph::new();
+    let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
+    let mut buf = g.import_buffer("rb", fake_buffer(), Access::Nothing, Some(Access::HostRead));
+    g.add_pass("write")
+        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    g.add_pass("copy")
+        .read(&img, Access::TransferRead, Mips::one(0))
+        .write_buffer(&mut buf, Access::TransferWrite);
+    let c = g.compile().unwrap();
+    assert_eq!(c.before[1].images[0].new_layout, L::TRANSFER_SRC_OPTIMAL);
+    assert_eq!(c.after.buffers.len(), 1);
+    let b = c.after.buffers[0];
+    assert_eq!((b.src_stage, b.src_access), (S::COPY, A::TRANSFER_WRITE));
+    assert_eq!((b.dst_stage, b.dst_access), (S::HOST, A::HOST_READ));
+}
+
+#[test]
+fn usage_flags_are_derived_from_declared_accesses() {
+    let mut g = Graph::new();
+    let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
+    let mut buf = g.import_buffer("rb", fake_buffer(), Access::Nothing, Some(Access::HostRead));
+    g.add_pass("write")
+        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    let mut other = g.create_image("b", ImageDesc::new_2d(FMT, 8, 8));
+    g.add_pass("sample")
+        .read(&img, Access::ComputeSampledRead, Mips::ALL)
+        .write(&mut other, Access::ComputeStorageWrite, Mips::ALL);
+    g.add_pass("copy")
+        .read(&other, Access::TransferRead, Mips::ALL)
+        .write_buffer(&mut buf, Access::TransferWrite);
+    let c = g.compile().unwrap();
+    use vk::ImageUsageFlags as U;
+    assert_eq!(c.image_usage[0], U::STORAGE | U::SAMPLED);
+    assert_eq!(c.image_usage[1], U::STORAGE | U::TRANSFER_SRC);
+    assert_eq!(c.buffer_usage[0], vk::BufferUsageFlags::TRANSFER_DST);
+}
+
+#[test]
+fn a_mip_outside_the_image_is_a_build_error() {
+    let mut g = Graph::new();
+    let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8).with_mips(2));
+    g.add_pass("bad")
+        .write(&mut img, Access::ComputeStorageWrite, Mips::one(5));
+    consume(&mut g, &img, Mips::ALL);
+    let e = g.compile().unwrap_err().to_string();
+    assert!(e.contains("bad") && e.contains("outside"), "{e}");
+}
+
+#[test]
+fn the_same_mip_declared_twice_in_one_pass_is_a_build_error() {
+    let mut g = Graph::new();
+    let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
+    let r = img.clone();
+    g.add_pass("twice")
+        .read(&r, Access::ComputeSampledRead, Mips::ALL)
+        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    consume(&mut g, &img, Mips::ALL);
+    assert!(g.compile().is_err());
+}

@@ -1,0 +1,157 @@
+//! Offscreen renders on lavapipe with the validation layer required: every run
+//! must finish with zero validation errors and warnings.
+
+mod common;
+
+use common::{assert_clean, blackhole, path_in, run, scratch};
+
+fn luma(p: &image::Rgb<u8>) -> f32 {
+    0.2126 * f32::from(p[0]) + 0.7152 * f32::from(p[1]) + 0.0722 * f32::from(p[2])
+}
+
+#[test]
+fn default_scene_renders_shadow_disk_and_sky_without_validation_messages() {
+    let dir = scratch();
+    let out = path_in(&dir, "bh.png");
+    let mut c = blackhole();
+    c.args(["render", "--width", "160", "--height", "90", "--out"])
+        .arg(&out);
+    let (code, stdout, stderr) = run(c);
+    assert_clean(code, &stdout, &stderr);
+
+    let img = image::open(&out).expect("PNG written").to_rgb8();
+    assert_eq!(img.dimensions(), (160, 90));
+
+    // The centre looks straight at the hole: the shadow is black.
+    for (x, y) in [(79, 44), (80, 44), (79, 43), (80, 43)] {
+        let p = img.get_pixel(x, y);
+        assert!(
+            p.0.iter().all(|&c| c <= 2),
+            "shadow pixel ({x},{y}) = {p:?}"
+        );
+    }
+    // Below the centre, the near side of the disk crosses in front of the
+    // hole (radius ~5 to ~10 along the centre column): warm, bright colour,
+    // unlike either checker tone of the sky (which are blue-grey).
+    for y in [50, 53, 56] {
+        let p = img.get_pixel(80, y);
+        assert!(
+            p[0] > 120 && p[0] > p[2].saturating_add(40) && p[0] >= p[1] && p[1] >= p[2],
+            "disk pixel (80,{y}) = {p:?}"
+        );
+    }
+    // Not uniform: the luminance spread is wide.
+    let l: Vec<f32> = img.pixels().map(luma).collect();
+    let mean = l.iter().sum::<f32>() / l.len() as f32;
+    let var = l.iter().map(|v| (v - mean).powi(2)).sum::<f32>() / l.len() as f32;
+    assert!(var.sqrt() > 20.0, "luminance std dev {}", var.sqrt());
+    // The sky's checker shows up in the corners: both tones present.
+    let corners = [
+        img.get_pixel(2, 2),
+        img.get_pixel(157, 2),
+        img.get_pixel(2, 87),
+        img.get_pixel(157, 87),
+    ];
+    assert!(
+        corners.iter().all(|p| p[2] >= p[0]),
+        "corners are sky: {corners:?}"
+    );
+}
+
+#[test]
+fn exr_output_round_trips_with_finite_linear_values() {
+    let dir = scratch();
+    let out = path_in(&dir, "bh.exr");
+    let mut c = blackhole();
+    c.args(["render", "--width", "64", "--height", "36", "--out"])
+        .arg(&out);
+    let (code, stdout, stderr) = run(c);
+    assert_clean(code, &stdout, &stderr);
+
+    let img = image::open(&out).expect("EXR written").to_rgba32f();
+    assert_eq!(img.dimensions(), (64, 36));
+    assert!(
+        img.pixels()
+            .all(|p| p.0.iter().all(|v| v.is_finite() && *v >= 0.0))
+    );
+    // Linear HDR: the disk near the inner edge is brighter than 1 (not tone-mapped).
+    let max = img.pixels().map(|p| p[0]).fold(0.0f32, f32::max);
+    assert!(max > 1.0, "max red {max}: expected unclamped HDR values");
+    // The centre is the shadow.
+    let p = img.get_pixel(31, 17);
+    assert!(p[0] == 0.0 && p[1] == 0.0 && p[2] == 0.0, "centre {p:?}");
+}
+
+#[test]
+fn negative_rs_is_rejected_naming_the_key_and_writes_nothing() {
+    let dir = scratch();
+    let scene = path_in(&dir, "bad.toml");
+    std::fs::write(
+        &scene,
+        "[camera]\nvfov_deg = 60.0\n\n[[black_hole]]\nrs = -1\n",
+    )
+    .unwrap();
+    let out = path_in(&dir, "bad.png");
+    let mut c = blackhole();
+    c.args(["render", "--width", "32", "--height", "18", "--scene"])
+        .arg(&scene)
+        .arg("--out")
+        .arg(&out);
+    let (code, _, stderr) = run(c);
+    assert_ne!(code, 0);
+    assert!(stderr.contains("black_hole[0].rs = -1"), "{stderr}");
+    assert!(stderr.contains("bad.toml:5"), "names the line: {stderr}");
+    assert_eq!(stderr.trim().lines().count(), 1, "one line: {stderr}");
+    assert!(!out.exists());
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        1,
+        "no temporary files left"
+    );
+}
+
+#[test]
+fn unknown_output_extension_is_rejected_before_rendering() {
+    let dir = scratch();
+    let out = path_in(&dir, "frame.jpg");
+    let mut c = blackhole();
+    c.args(["render", "--out"]).arg(&out);
+    let (code, _, stderr) = run(c);
+    assert_eq!(code, 2);
+    assert!(stderr.contains("unknown extension `jpg`"), "{stderr}");
+    assert!(!out.exists());
+}
+
+#[test]
+fn unknown_preset_lists_the_presets() {
+    let mut c = blackhole();
+    c.args(["render", "--scene", "no-such-scene", "--out", "x.png"]);
+    let (code, _, stderr) = run(c);
+    assert_eq!(code, 2);
+    assert!(
+        stderr.contains("no-such-scene") && stderr.contains("default"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn no_vulkan_driver_is_one_sentence_naming_the_package() {
+    let dir = scratch();
+    let out = path_in(&dir, "x.png");
+    let mut c = blackhole();
+    c.env("BLACKHOLE_VALIDATION", "0")
+        .env("VK_DRIVER_FILES", "/nonexistent/icd.json")
+        .env("VK_ICD_FILENAMES", "/nonexistent/icd.json")
+        .args(["render", "--out"])
+        .arg(&out);
+    let (code, _, stderr) = run(c);
+    assert_eq!(code, 2, "{stderr}");
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.starts_with("error:")).collect();
+    assert_eq!(errors.len(), 1, "{stderr}");
+    assert!(
+        errors[0].contains("no Vulkan device") && errors[0].contains("mesa-vulkan-drivers"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert!(!out.exists());
+}

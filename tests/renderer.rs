@@ -1,0 +1,57 @@
+//! The library API on lavapipe: frames through the frame graph, per-pass GPU
+//! timings, transient reuse, and a silent validation layer.
+
+use blackhole::vk::Validation;
+use blackhole::{OutputKind, Pixels, Renderer, RendererOptions, Scene};
+
+fn renderer() -> Renderer {
+    Renderer::new(RendererOptions {
+        validation: Validation::Required,
+    })
+    .expect("a Vulkan device with the validation layer (install mesa-vulkan-drivers and vulkan-validationlayers)")
+}
+
+#[test]
+fn frames_are_timed_per_pass_and_validation_stays_silent() {
+    let mut r = renderer();
+    let scene = Scene::builtin_default().unwrap();
+    // Two LDR frames (the second reuses the transients), then an HDR frame whose
+    // graph culls the composite.
+    for _ in 0..2 {
+        let f = r.render(&scene, 48, 27, OutputKind::Ldr).unwrap();
+        let names: Vec<&str> = f.timings.passes.iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(names, ["raymarch", "composite", "readback"]);
+        assert!(
+            f.timings
+                .passes
+                .iter()
+                .all(|p| p.ms >= 0.0 && p.ms.is_finite())
+        );
+        assert!(
+            f.timings.passes[0].ms > 0.0,
+            "the ray march takes time: {}",
+            f.timings
+        );
+        match f.pixels {
+            Pixels::Rgba8(p) => assert_eq!(p.len(), 48 * 27 * 4),
+            Pixels::Rgba32F(_) => panic!("LDR frame came back as floats"),
+        }
+    }
+    let f = r.render(&scene, 48, 27, OutputKind::Hdr).unwrap();
+    let names: Vec<&str> = f.timings.passes.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(
+        names,
+        ["raymarch", "readback"],
+        "composite culled for HDR output"
+    );
+    assert_eq!(r.validation_counts(), (0, 0));
+}
+
+#[test]
+fn zero_sized_or_huge_images_are_usage_errors() {
+    let mut r = renderer();
+    let scene = Scene::builtin_default().unwrap();
+    assert!(r.render(&scene, 0, 10, OutputKind::Ldr).is_err());
+    assert!(r.render(&scene, 1 << 20, 10, OutputKind::Ldr).is_err());
+    assert_eq!(r.validation_counts(), (0, 0));
+}
