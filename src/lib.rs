@@ -17,6 +17,7 @@ pub mod error;
 pub mod graph;
 pub mod output;
 pub mod passes;
+pub mod physics;
 pub mod profile;
 pub mod renderer;
 pub mod scene;

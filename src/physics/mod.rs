@@ -1,0 +1,8 @@
+//! The f64 CPU reference: light paths around Schwarzschild holes, the thin
+//! disk's redshift. Used by the tests (against closed forms, and against the
+//! GPU ray by ray) and to draw photon paths.
+
+pub mod geodesic;
+pub mod redshift;
+
+pub use geodesic::{Disk, Hole, Outcome, TraceOptions, TraceResult, trace};
