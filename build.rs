@@ -3,6 +3,10 @@
 
 use std::path::{Path, PathBuf};
 
+/// Extra builds of a shader with preprocessor macros: (source, output stem, defines).
+const VARIANTS: &[(&str, &str, &[&str])] =
+    &[("raymarch.comp", "raymarch_aov.comp", &["GEODESIC_AOV"])];
+
 fn main() {
     if let Err(e) = run() {
         // One line per error, as `file:line: message`, then fail the build.
@@ -36,16 +40,24 @@ fn run() -> Result<(), String> {
     let mut errors = Vec::new();
     for src in &sources {
         println!("cargo:rerun-if-changed={}", src.display());
-        match compile(&compiler, src, &include_dir) {
-            Ok(words) => {
-                let name = src
-                    .file_name()
-                    .map(|n| n.to_string_lossy().into_owned())
-                    .unwrap_or_default();
-                let dst = out.join(format!("{name}.spv"));
-                std::fs::write(&dst, words).map_err(|e| format!("{}: {e}", dst.display()))?;
+        let name = src
+            .file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let mut builds: Vec<(String, &[&str])> = vec![(name.clone(), &[])];
+        for (source, stem, defines) in VARIANTS {
+            if *source == name {
+                builds.push((stem.to_string(), defines));
             }
-            Err(e) => errors.push(e),
+        }
+        for (stem, defines) in builds {
+            match compile(&compiler, src, &include_dir, defines) {
+                Ok(words) => {
+                    let dst = out.join(format!("{stem}.spv"));
+                    std::fs::write(&dst, words).map_err(|e| format!("{}: {e}", dst.display()))?;
+                }
+                Err(e) => errors.push(e),
+            }
         }
     }
     if errors.is_empty() {
@@ -59,6 +71,7 @@ fn compile(
     compiler: &shaderc::Compiler,
     src: &Path,
     include_dir: &Path,
+    defines: &[&str],
 ) -> Result<Vec<u8>, String> {
     let text = std::fs::read_to_string(src).map_err(|e| format!("{}: {e}", src.display()))?;
     let mut options =
@@ -69,6 +82,9 @@ fn compile(
     );
     options.set_optimization_level(shaderc::OptimizationLevel::Performance);
     options.set_generate_debug_info();
+    for d in defines {
+        options.add_macro_definition(d, None);
+    }
     let inc = include_dir.to_owned();
     options.set_include_callback(move |name, _kind, from, _depth| {
         let path = inc.join(name);

@@ -19,6 +19,14 @@ struct Cli {
     command: Command,
 }
 
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum Aov {
+    /// The rendered image.
+    Beauty,
+    /// The geodesic AOV (DESIGN.md section 4).
+    Geodesic,
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Render a still offscreen to PNG (8-bit sRGB, tone-mapped) or EXR (linear HDR).
@@ -36,6 +44,10 @@ enum Command {
         /// Output file; the extension chooses the format (.png or .exr).
         #[arg(long, default_value = "blackhole.png")]
         out: PathBuf,
+        /// What to write: the image, or per pixel where its ray went (EXR only;
+        /// R,G,B,A = direction, or radius/azimuth/redshift, and the outcome).
+        #[arg(long, value_enum, default_value_t = Aov::Beauty)]
+        aov: Aov,
     },
     /// Render N frames and print GPU time per pass (median, p95, share of frame).
     #[command(after_help = presets_help())]
@@ -87,16 +99,33 @@ fn run(cli: Cli) -> Result<ExitCode, Error> {
             width,
             height,
             out,
+            aov,
         } => {
             // Check everything the user gave before touching the GPU.
             let format = FileFormat::from_path(&out)?;
+            if aov == Aov::Geodesic && format != FileFormat::Exr {
+                return Err(Error::Usage(format!(
+                    "--aov geodesic writes float data: give an .exr --out, not {}",
+                    out.display()
+                )));
+            }
             let scene = match scene {
                 Some(s) => Scene::load(&s)?,
                 None => Scene::builtin_default()?,
             };
+            if aov == Aov::Geodesic && scene.disk.kind == blackhole::scene::DiskKind::Volumetric {
+                return Err(Error::Usage(
+                    "--aov geodesic needs a thin disk (or none); this scene's disk is volumetric"
+                        .into(),
+                ));
+            }
+            let kind = match aov {
+                Aov::Beauty => format.output_kind(),
+                Aov::Geodesic => blackhole::OutputKind::Geodesic,
+            };
             let mut renderer = Renderer::new(RendererOptions::default())?;
             let start = Instant::now();
-            let frame = renderer.render(&scene, width, height, format.output_kind())?;
+            let frame = renderer.render(&scene, width, height, kind)?;
             output::write_frame(&frame, &out, format)?;
             log::info!("GPU: {}", frame.timings);
             println!(

@@ -19,6 +19,8 @@ pub enum OutputKind {
     Ldr,
     /// Linear HDR RGBA, before tone mapping.
     Hdr,
+    /// The geodesic AOV (DESIGN.md section 4), RGBA32F.
+    Geodesic,
 }
 
 /// Pixels read back from the GPU, row 0 at the top.
@@ -152,9 +154,15 @@ impl Renderer {
             .mapped_mut()?
             .copy_from_slice(bytemuck::bytes_of(&params));
 
+        if kind == OutputKind::Geodesic && scene.disk.kind == crate::scene::DiskKind::Volumetric {
+            return Err(Error::Usage(
+                "--aov geodesic describes thin-disk hits; this scene's disk is volumetric".into(),
+            ));
+        }
         let texel_bytes: u64 = match kind {
             OutputKind::Ldr => 4,
             OutputKind::Hdr => 8,
+            OutputKind::Geodesic => 16,
         };
         let needed = u64::from(width) * u64::from(height) * texel_bytes;
         if self.readback.as_ref().is_none_or(|b| b.size < needed) {
@@ -181,13 +189,23 @@ impl Renderer {
             Access::Nothing,
             Some(Access::HostRead),
         );
-        let hdr =
-            passes::raymarch::add_raymarch(&mut g, pipelines, self.params.buffer, width, height);
+        let mode = match kind {
+            OutputKind::Geodesic => raymarch::RaymarchOutput::Geodesic,
+            OutputKind::Ldr | OutputKind::Hdr => raymarch::RaymarchOutput::Beauty,
+        };
+        let hdr = passes::raymarch::add_raymarch(
+            &mut g,
+            pipelines,
+            self.params.buffer,
+            width,
+            height,
+            mode,
+        );
         let result = match kind {
             OutputKind::Ldr => {
                 composite::add_composite(&mut g, pipelines, &hdr, scene.post.exposure_ev as f32)
             }
-            OutputKind::Hdr => hdr,
+            OutputKind::Hdr | OutputKind::Geodesic => hdr,
         };
         copy::add_copy_to_buffer(&mut g, &result, &mut out_buf);
         let compiled = g.compile()?;
@@ -211,6 +229,12 @@ impl Renderer {
                 bytes
                     .chunks_exact(2)
                     .map(|c| half::f16::from_le_bytes([c[0], c[1]]).to_f32())
+                    .collect(),
+            ),
+            OutputKind::Geodesic => Pixels::Rgba32F(
+                bytes
+                    .chunks_exact(4)
+                    .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]))
                     .collect(),
             ),
         };

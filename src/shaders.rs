@@ -4,3 +4,5 @@
 pub const RAYMARCH: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/raymarch.comp.spv"));
 /// The composite (`shaders/composite.comp`).
 pub const COMPOSITE: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/composite.comp.spv"));
+/// The ray march writing the geodesic AOV (`raymarch.comp` with `GEODESIC_AOV`).
+pub const RAYMARCH_AOV: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/raymarch_aov.comp.spv"));

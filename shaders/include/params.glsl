@@ -20,8 +20,10 @@ layout(std140, binding = 1) uniform RaymarchParams {
     vec4 cam_fwd;      // xyz: forward
     vec4 disk_normal;  // xyz: unit normal;     w: disk kind
     vec4 disk;         // x: inner radius, y: outer radius, z: brightness
+    vec4 disk_e1;      // xyz: in-plane basis vector (azimuth 0)
+    vec4 disk_e2;      // xyz: e1 x normal (azimuth 90 degrees)
     vec4 sky;          // x: sky kind, y: squares, z: brightness
-    vec4 integ;        // x: tolerance, y: escape radius, z: gravity on (1/0)
+    vec4 integ;        // x: tolerance, y: escape radius, z: gravity on (1/0), w: Binet step (rad)
     uvec4 counts;      // x: hole count, y: width, z: height, w: step budget
     vec4 holes[MAX_HOLES]; // xyz: position, w: rs
 } P;

@@ -57,15 +57,10 @@ pub fn write_frame(frame: &Frame, path: &Path, format: FileFormat) -> Result<()>
             let rgba = image::RgbaImage::from_raw(w, h, p.clone()).ok_or_else(bad)?;
             image::DynamicImage::ImageRgb8(image::DynamicImage::ImageRgba8(rgba).to_rgb8())
         }
-        (Pixels::Rgba32F(p), FileFormat::Exr) => {
-            let mut data = p.clone();
-            for px in data.chunks_exact_mut(4) {
-                px[3] = 1.0;
-            }
-            image::DynamicImage::ImageRgba32F(
-                image::Rgba32FImage::from_raw(w, h, data).ok_or_else(bad)?,
-            )
-        }
+        // Alpha is written as rendered: 1 for beauty, the outcome for the AOV.
+        (Pixels::Rgba32F(p), FileFormat::Exr) => image::DynamicImage::ImageRgba32F(
+            image::Rgba32FImage::from_raw(w, h, p.clone()).ok_or_else(bad)?,
+        ),
         _ => {
             return Err(Error::Other(format!(
                 "cannot write these pixels as {format:?} (renderer produced the wrong kind)"

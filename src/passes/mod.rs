@@ -13,6 +13,7 @@ use crate::vk::{BindingKind, ComputePipeline, Gpu, Sampler};
 /// Pipelines and samplers the passes use, created once per renderer.
 pub struct Pipelines {
     pub raymarch: ComputePipeline,
+    pub raymarch_aov: ComputePipeline,
     pub composite: ComputePipeline,
     pub linear_clamp: Sampler,
 }
@@ -25,6 +26,13 @@ impl Pipelines {
                 gpu,
                 "raymarch",
                 crate::shaders::RAYMARCH,
+                &[BindingKind::StorageImage, BindingKind::UniformBuffer],
+                0,
+            )?,
+            raymarch_aov: ComputePipeline::new(
+                gpu,
+                "raymarch (geodesic AOV)",
+                crate::shaders::RAYMARCH_AOV,
                 &[BindingKind::StorageImage, BindingKind::UniformBuffer],
                 0,
             )?,

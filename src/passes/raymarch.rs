@@ -17,6 +17,17 @@ use crate::vk::{Access, Descriptor, bind_compute};
 
 /// HDR format written by the ray march.
 pub const HDR_FORMAT: vk::Format = vk::Format::R16G16B16A16_SFLOAT;
+/// Format of the geodesic AOV (full f32: directions to 1e-7).
+pub const AOV_FORMAT: vk::Format = vk::Format::R32G32B32A32_SFLOAT;
+
+/// What the ray march writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RaymarchOutput {
+    /// Linear HDR radiance.
+    Beauty,
+    /// The geodesic AOV of DESIGN.md section 4.
+    Geodesic,
+}
 
 /// Uniform block of the ray march. Mirrors `RaymarchParams` in
 /// shaders/include/params.glsl (std140; every member a 16-byte vec4).
@@ -29,6 +40,8 @@ pub struct RaymarchParams {
     pub cam_fwd: [f32; 4],
     pub disk_normal: [f32; 4],
     pub disk: [f32; 4],
+    pub disk_e1: [f32; 4],
+    pub disk_e2: [f32; 4],
     pub sky: [f32; 4],
     pub integ: [f32; 4],
     pub counts: [u32; 4],
@@ -37,6 +50,14 @@ pub struct RaymarchParams {
 
 fn v4(v: glam::DVec3, w: f64) -> [f32; 4] {
     [v.x as f32, v.y as f32, v.z as f32, w as f32]
+}
+
+/// The angle step of the one-hole (Binet) integrator for a quality tolerance:
+/// classic RK4's local error goes as h^5, so h = 1.4 tol^(1/4) keeps it near
+/// tol; 0.079 rad at the default 1e-5. (At that step the GPU's error is set by
+/// f32 rounding, not by the step: see tests/geodesic.rs.)
+pub fn binet_step(tolerance: f64) -> f64 {
+    (1.4 * tolerance.powf(0.25)).clamp(0.002, 0.2)
 }
 
 impl RaymarchParams {
@@ -55,6 +76,7 @@ impl RaymarchParams {
             SkyKind::Black => 0.0,
             SkyKind::Checker => 1.0,
         };
+        let (e1, e2) = crate::physics::geodesic::disk_basis(glam::DVec3::from(scene.disk.normal));
         RaymarchParams {
             cam_pos: v4(f.position, f.tan_half_fov),
             cam_right: v4(f.right, f64::from(width) / f64::from(height)),
@@ -67,6 +89,8 @@ impl RaymarchParams {
                 scene.disk.brightness as f32,
                 0.0,
             ],
+            disk_e1: v4(e1, 0.0),
+            disk_e2: v4(e2, 0.0),
             sky: [
                 sky_kind,
                 scene.sky.squares as f32,
@@ -77,7 +101,7 @@ impl RaymarchParams {
                 scene.quality.tolerance as f32,
                 scene.escape_radius() as f32,
                 1.0,
-                0.0,
+                binet_step(scene.quality.tolerance) as f32,
             ],
             counts: [
                 scene.black_holes.len().min(MAX_HOLES) as u32,
@@ -97,8 +121,13 @@ pub fn add_raymarch<'a>(
     params: vk::Buffer,
     width: u32,
     height: u32,
+    output: RaymarchOutput,
 ) -> ImageHandle {
-    let mut hdr = graph.create_image("hdr", ImageDesc::new_2d(HDR_FORMAT, width, height));
+    let (name, format, pipeline) = match output {
+        RaymarchOutput::Beauty => ("hdr", HDR_FORMAT, &pipelines.raymarch),
+        RaymarchOutput::Geodesic => ("geodesic aov", AOV_FORMAT, &pipelines.raymarch_aov),
+    };
+    let mut hdr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
     let out = hdr.clone();
     graph
         .add_pass("raymarch")
@@ -107,7 +136,7 @@ pub fn add_raymarch<'a>(
             bind_compute(
                 ctx.gpu,
                 ctx.cmd,
-                &pipelines.raymarch,
+                pipeline,
                 &[
                     Descriptor::StorageImage(ctx.view(&out, 0)),
                     Descriptor::UniformBuffer(params),

@@ -1,0 +1,92 @@
+//! Structs shared with GLSL: the Rust side's field offsets must equal the
+//! offsets the shader compiler assigned, read from the SPIR-V itself.
+
+use std::mem::{offset_of, size_of};
+
+use blackhole::passes::raymarch::RaymarchParams;
+
+/// Member offsets (by member index) of the struct named `name` in a SPIR-V module.
+fn member_offsets(spirv: &[u8], name: &str) -> Vec<u32> {
+    let words: Vec<u32> = spirv
+        .chunks_exact(4)
+        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+        .collect();
+    assert_eq!(words[0], 0x0723_0203, "SPIR-V magic");
+    let mut ids = Vec::new();
+    let mut offsets: Vec<(u32, u32, u32)> = Vec::new();
+    let mut i = 5;
+    while i < words.len() {
+        let (count, opcode) = ((words[i] >> 16) as usize, words[i] & 0xffff);
+        let ops = &words[i + 1..i + count];
+        match opcode {
+            // OpName: target id, then a nul-terminated UTF-8 string.
+            5 => {
+                let bytes: Vec<u8> = ops[1..].iter().flat_map(|w| w.to_le_bytes()).collect();
+                let s: Vec<u8> = bytes.into_iter().take_while(|&b| b != 0).collect();
+                if s == name.as_bytes() {
+                    ids.push(ops[0]);
+                }
+            }
+            // OpMemberDecorate: struct, member, decoration (35 = Offset), value.
+            72 if ops[2] == 35 => offsets.push((ops[0], ops[1], ops[3])),
+            _ => {}
+        }
+        i += count.max(1);
+    }
+    let id = *ids
+        .first()
+        .unwrap_or_else(|| panic!("no struct named {name}"));
+    let mut m: Vec<(u32, u32)> = offsets
+        .iter()
+        .filter(|o| o.0 == id)
+        .map(|o| (o.1, o.2))
+        .collect();
+    m.sort();
+    m.into_iter().map(|(_, off)| off).collect()
+}
+
+#[test]
+fn raymarch_params_match_the_glsl_block() {
+    let rust = [
+        offset_of!(RaymarchParams, cam_pos),
+        offset_of!(RaymarchParams, cam_right),
+        offset_of!(RaymarchParams, cam_up),
+        offset_of!(RaymarchParams, cam_fwd),
+        offset_of!(RaymarchParams, disk_normal),
+        offset_of!(RaymarchParams, disk),
+        offset_of!(RaymarchParams, disk_e1),
+        offset_of!(RaymarchParams, disk_e2),
+        offset_of!(RaymarchParams, sky),
+        offset_of!(RaymarchParams, integ),
+        offset_of!(RaymarchParams, counts),
+        offset_of!(RaymarchParams, holes),
+    ];
+    for spirv in [
+        blackhole::shaders::RAYMARCH,
+        blackhole::shaders::RAYMARCH_AOV,
+    ] {
+        let glsl = member_offsets(spirv, "RaymarchParams");
+        let rust: Vec<u32> = rust.iter().map(|&o| o as u32).collect();
+        assert_eq!(glsl, rust, "member offsets, GLSL vs Rust");
+    }
+    let holes = offset_of!(RaymarchParams, holes);
+    assert_eq!(
+        size_of::<RaymarchParams>(),
+        holes + 16 * blackhole::scene::MAX_HOLES
+    );
+}
+
+#[test]
+fn composite_push_constants_match_the_glsl_block() {
+    use blackhole::passes::composite::CompositePush;
+    let glsl = member_offsets(blackhole::shaders::COMPOSITE, "Push");
+    let rust: Vec<u32> = [
+        offset_of!(CompositePush, exposure),
+        offset_of!(CompositePush, width),
+        offset_of!(CompositePush, height),
+    ]
+    .iter()
+    .map(|&o| o as u32)
+    .collect();
+    assert_eq!(glsl, rust);
+}
