@@ -14,6 +14,11 @@ layout(binding = 0, rgba32f) uniform writeonly image2D out_img;
 #else
 layout(binding = 0, rgba16f) uniform writeonly image2D out_img;
 #endif
+// Linear sRGB colour of luminance 1 per blackbody temperature, log-spaced
+// from LUT_MIN_K to LUT_MAX_K (src/physics/blackbody.rs).
+layout(binding = 2) uniform sampler2D disk_lut;
+const float LUT_MIN_K = 500.0;
+const float LUT_MAX_K = 100000.0;
 
 #define OUT_ESCAPED 0
 #define OUT_CAPTURED 1
@@ -87,7 +92,9 @@ float disk_redshift(vec3 p, vec3 x, vec3 v) {
     vec3 d = x - P.holes[0].xyz;
     float rx = length(d);
     vec3 hv = cross(d, v);
-    float vinf = sqrt(max(dot(v, v) - rs * dot(hv, hv) / (rx * rx * rx), 1e-20));
+    // With gravity off the ray is straight and |v| is its speed everywhere.
+    float bend = P.integ.z > 0.5 ? rs * dot(hv, hv) / (rx * rx * rx) : 0.0;
+    float vinf = sqrt(max(dot(v, v) - bend, 1e-20));
     float lambda = dot(cross(d, -v), P.disk_normal.xyz) / vinf;
     float omega = sqrt(0.5 * rs / (r * r * r));
     return sqrt(max(1.0 - 1.5 * rs / r, 0.0)) / (1.0 - omega * lambda);
@@ -240,7 +247,7 @@ Hit trace(vec3 x, vec3 v) {
         }
         if (rmin > r_esc && dot(xn - c0, vn) > 0.0) {
             hit.outcome = OUT_ESCAPED;
-            hit.dir = asymptotic_direction(xn, vn);
+            hit.dir = gravity ? asymptotic_direction(xn, vn) : normalize(vn);
             return hit;
         }
 
@@ -268,15 +275,24 @@ vec3 sky_color(vec3 d) {
     return vec3(0.0);
 }
 
-// A simple radial colour for the thin disk: hot white-blue inside, orange
-// outside, brightness falling with radius.
-vec3 disk_color(vec3 p) {
-    float rho = length(p - P.holes[0].xyz);
-    float t = clamp((rho - P.disk.x) / max(P.disk.y - P.disk.x, 1e-6), 0.0, 1.0);
-    vec3 inner = vec3(1.0, 0.92, 0.8);
-    vec3 outer = vec3(1.0, 0.38, 0.08);
-    float falloff = pow(max(P.disk.x, 1.0) / max(rho, 1e-3), 1.5);
-    return mix(inner, outer, t) * (3.0 * falloff * P.disk.z);
+// Light of the thin disk at radius r whose light reaches us shifted by g_full
+// (DESIGN.md section 2): Novikov-Thorne temperature T(r), observed temperature
+// g T coloured by the blackbody table, observed bolometric intensity g^4 times
+// the emitted T^4. The switches pick which parts of g apply: the gravitational
+// part sqrt(1 - rs/r), the kinematic (Doppler) rest, both, or neither.
+vec3 disk_color(float r, float g_full) {
+    float rs = P.holes[0].w;
+    float r_in = P.disk.x;
+    float f = max(pow(r, -3.0) * (1.0 - sqrt(r_in / r)), 0.0);
+    float t_rel = pow(f / P.disk_temp.y, 0.25);   // T / T_peak
+    float g_grav = sqrt(max(1.0 - rs / r, 1e-6));
+    bool doppler = P.disk_temp.z > 0.5, redshift = P.disk_temp.w > 0.5;
+    float g = doppler ? (redshift ? g_full : g_full / g_grav) : (redshift ? g_grav : 1.0);
+    float t_obs = g * t_rel * P.disk_temp.x;
+    float u = (log(max(t_obs, 1.0)) - log(LUT_MIN_K)) / (log(LUT_MAX_K) - log(LUT_MIN_K));
+    vec3 c = textureLod(disk_lut, vec2(clamp(u, 0.0, 1.0), 0.5), 0.0).rgb;
+    float gt = g * t_rel;
+    return c * (P.disk.z * gt * gt * gt * gt);
 }
 
 void main() {
@@ -307,7 +323,7 @@ void main() {
 #else
     vec3 color = vec3(0.0);
     if (hit.outcome == OUT_ESCAPED) color = sky_color(hit.dir);
-    else if (hit.outcome == OUT_DISK) color = disk_color(hit.pos);
+    else if (hit.outcome == OUT_DISK) color = disk_color(length(hit.pos - P.holes[0].xyz), hit.g);
     imageStore(out_img, ivec2(px), vec4(color, 1.0));
 #endif
 }

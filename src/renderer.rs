@@ -6,10 +6,11 @@ use std::sync::Arc;
 use ash::vk;
 use gpu_allocator::MemoryLocation;
 
+use crate::graph::ImageDesc;
 use crate::graph::{self, Graph, TransientPool};
 use crate::passes::{self, Pipelines, composite, copy, raymarch};
 use crate::scene::Scene;
-use crate::vk::{Access, Buffer, CommandContext, Gpu, TimestampPool, Validation};
+use crate::vk::{Access, Buffer, CommandContext, Gpu, Image, TimestampPool, Validation};
 use crate::{Error, Result};
 
 /// What a render produces.
@@ -86,6 +87,7 @@ const MAX_TIMED_PASSES: u32 = 64;
 /// resources, then pipelines, then (through the last `Arc`) the device.
 pub struct Renderer {
     transients: TransientPool,
+    disk_lut: Image,
     readback: Option<Buffer>,
     params: Buffer,
     timestamps: Option<TimestampPool>,
@@ -108,8 +110,12 @@ impl Renderer {
             vk::BufferUsageFlags::UNIFORM_BUFFER,
             MemoryLocation::CpuToGpu,
         )?;
+        let mut transients = TransientPool::new(&gpu);
+        let mut commands = commands;
+        let disk_lut = upload_disk_lut(&gpu, &mut commands, &mut transients)?;
         Ok(Renderer {
-            transients: TransientPool::new(&gpu),
+            transients,
+            disk_lut,
             readback: None,
             params,
             timestamps,
@@ -193,10 +199,18 @@ impl Renderer {
             OutputKind::Geodesic => raymarch::RaymarchOutput::Geodesic,
             OutputKind::Ldr | OutputKind::Hdr => raymarch::RaymarchOutput::Beauty,
         };
+        let lut = g.import_image(
+            "disk lut",
+            self.disk_lut.desc,
+            self.disk_lut.binding(),
+            Access::ComputeSampledRead,
+            Some(Access::ComputeSampledRead),
+        );
         let hdr = passes::raymarch::add_raymarch(
             &mut g,
             pipelines,
             self.params.buffer,
+            &lut,
             width,
             height,
             mode,
@@ -277,4 +291,56 @@ impl Renderer {
         .limits
         .max_image_dimension2_d
     }
+}
+
+/// Builds the blackbody colour table on the CPU and uploads it through a
+/// one-pass graph; returns the image, left ready for sampling.
+fn upload_disk_lut(
+    gpu: &Arc<Gpu>,
+    commands: &mut CommandContext,
+    transients: &mut TransientPool,
+) -> Result<Image> {
+    use crate::physics::blackbody;
+    let texels = blackbody::lut_rgba();
+    let desc = ImageDesc::new_2d(
+        vk::Format::R32G32B32A32_SFLOAT,
+        blackbody::LUT_SIZE as u32,
+        1,
+    );
+    let image = Image::new(
+        gpu,
+        "disk lut",
+        desc,
+        vk::ImageUsageFlags::SAMPLED | vk::ImageUsageFlags::TRANSFER_DST,
+    )?;
+    let bytes: &[u8] = bytemuck::cast_slice(&texels);
+    let mut staging = Buffer::new(
+        gpu,
+        "disk lut staging",
+        bytes.len() as u64,
+        vk::BufferUsageFlags::TRANSFER_SRC,
+        MemoryLocation::CpuToGpu,
+    )?;
+    staging.mapped_mut()?.copy_from_slice(bytes);
+
+    let mut g = Graph::new();
+    let src = g.import_buffer(
+        "disk lut staging",
+        staging.binding(),
+        Access::HostWrite,
+        None,
+    );
+    let mut dst = g.import_image(
+        "disk lut",
+        desc,
+        image.binding(),
+        Access::Nothing,
+        Some(Access::ComputeSampledRead),
+    );
+    copy::add_upload(&mut g, &src, &mut dst);
+    let compiled = g.compile()?;
+    let cmd = commands.begin()?;
+    graph::execute::execute(g, &compiled, gpu, cmd, transients, None)?;
+    commands.submit_and_wait()?;
+    Ok(image)
 }

@@ -56,6 +56,7 @@ fn raymarch_params_match_the_glsl_block() {
         offset_of!(RaymarchParams, disk),
         offset_of!(RaymarchParams, disk_e1),
         offset_of!(RaymarchParams, disk_e2),
+        offset_of!(RaymarchParams, disk_temp),
         offset_of!(RaymarchParams, sky),
         offset_of!(RaymarchParams, integ),
         offset_of!(RaymarchParams, counts),

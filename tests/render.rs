@@ -31,12 +31,13 @@ fn default_scene_renders_shadow_disk_and_sky_without_validation_messages() {
         );
     }
     // Below the centre, the near side of the disk crosses in front of the
-    // hole (radius ~5 to ~10 along the centre column): warm, bright colour,
-    // unlike either checker tone of the sky (which are blue-grey).
+    // hole (radius ~5 to ~10 along the centre column): the warm colour of a
+    // 5500 K blackbody seen redshifted, unlike either checker tone of the sky
+    // (which are blue-grey).
     for y in [50, 53, 56] {
         let p = img.get_pixel(80, y);
         assert!(
-            p[0] > 120 && p[0] > p[2].saturating_add(40) && p[0] >= p[1] && p[1] >= p[2],
+            p[0] > 100 && p[0] > p[2].saturating_add(40) && p[0] >= p[1] && p[1] >= p[2],
             "disk pixel (80,{y}) = {p:?}"
         );
     }
@@ -154,4 +155,49 @@ fn no_vulkan_driver_is_one_sentence_naming_the_package() {
     );
     assert!(!stderr.contains("panicked"), "{stderr}");
     assert!(!out.exists());
+}
+
+fn render_small(dir: &tempfile::TempDir, name: &str, scene: &str) -> image::RgbImage {
+    let scene_path = path_in(dir, &format!("{name}.toml"));
+    std::fs::write(&scene_path, scene).unwrap();
+    let out = path_in(dir, &format!("{name}.png"));
+    let mut c = blackhole();
+    c.args(["render", "--width", "160", "--height", "90", "--scene"])
+        .arg(&scene_path)
+        .arg("--out")
+        .arg(&out);
+    let (code, stdout, stderr) = run(c);
+    assert_clean(code, &stdout, &stderr);
+    image::open(&out).expect("PNG written").to_rgb8()
+}
+
+#[test]
+fn doppler_brightens_the_approaching_side_and_the_film_look_is_symmetric() {
+    let dir = scratch();
+    // The disk turns counter-clockwise seen from +y, so its right (+x) side
+    // comes toward the camera on -z.
+    let physical = render_small(&dir, "physical", "");
+    let film = render_small(
+        &dir,
+        "film",
+        "[physics]\ndoppler = false\ngravitational_redshift = false\n",
+    );
+    for (x, y) in [(20, 53), (40, 56), (60, 50)] {
+        let (left, right) = (physical.get_pixel(x, y), physical.get_pixel(159 - x, y));
+        assert!(
+            luma(right) > 1.5 * luma(left),
+            "physical ({x},{y}) {left:?} vs {right:?}"
+        );
+        // Blueshifted: relatively more blue on the approaching side.
+        let bluer = f32::from(right[2]) / f32::from(right[0].max(1))
+            > f32::from(left[2]) / f32::from(left[0].max(1));
+        assert!(bluer, "physical ({x},{y}) {left:?} vs {right:?}");
+        let (fl, fr) = (film.get_pixel(x, y), film.get_pixel(159 - x, y));
+        for k in 0..3 {
+            assert!(
+                fl[k].abs_diff(fr[k]) <= 2,
+                "film ({x},{y}) {fl:?} vs {fr:?}"
+            );
+        }
+    }
 }

@@ -1,4 +1,4 @@
-//! Copy an image (mip 0) into a buffer, for readback to the host.
+//! Copies between images and buffers: readback to the host, uploads from it.
 
 use ash::vk;
 
@@ -38,6 +38,47 @@ pub fn add_copy_to_buffer(graph: &mut Graph<'_>, image: &ImageHandle, buffer: &m
                     ctx.image(&src),
                     vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
                     ctx.buffer(&dst),
+                    &[region],
+                )
+            };
+            Ok(())
+        });
+}
+
+/// Adds a transfer pass that copies `buffer` (tightly packed texels) into mip 0
+/// of `image`.
+pub fn add_upload(graph: &mut Graph<'_>, buffer: &BufferHandle, image: &mut ImageHandle) {
+    let (src, dst) = (buffer.clone(), image.clone());
+    graph
+        .add_pass("upload")
+        .read_buffer(buffer, Access::TransferRead)
+        .write(image, Access::TransferWrite, Mips::one(0))
+        .record(move |ctx| {
+            let region = vk::BufferImageCopy {
+                buffer_offset: 0,
+                buffer_row_length: 0,
+                buffer_image_height: 0,
+                image_subresource: vk::ImageSubresourceLayers {
+                    aspect_mask: vk::ImageAspectFlags::COLOR,
+                    mip_level: 0,
+                    base_array_layer: 0,
+                    layer_count: 1,
+                },
+                image_offset: vk::Offset3D::default(),
+                image_extent: vk::Extent3D {
+                    width: dst.desc.width,
+                    height: dst.desc.height,
+                    depth: 1,
+                },
+            };
+            // SAFETY: the graph put the image in TRANSFER_DST_OPTIMAL after the
+            // host's writes to the buffer; the region fits both.
+            unsafe {
+                ctx.gpu.device.cmd_copy_buffer_to_image(
+                    ctx.cmd,
+                    ctx.buffer(&src),
+                    ctx.image(&dst),
+                    vk::ImageLayout::TRANSFER_DST_OPTIMAL,
                     &[region],
                 )
             };

@@ -10,6 +10,12 @@ use std::sync::Arc;
 use crate::Result;
 use crate::vk::{BindingKind, ComputePipeline, Gpu, Sampler};
 
+const RAYMARCH_BINDINGS: [BindingKind; 3] = [
+    BindingKind::StorageImage,
+    BindingKind::UniformBuffer,
+    BindingKind::SampledImage,
+];
+
 /// Pipelines and samplers the passes use, created once per renderer.
 pub struct Pipelines {
     pub raymarch: ComputePipeline,
@@ -26,14 +32,14 @@ impl Pipelines {
                 gpu,
                 "raymarch",
                 crate::shaders::RAYMARCH,
-                &[BindingKind::StorageImage, BindingKind::UniformBuffer],
+                &RAYMARCH_BINDINGS,
                 0,
             )?,
             raymarch_aov: ComputePipeline::new(
                 gpu,
                 "raymarch (geodesic AOV)",
                 crate::shaders::RAYMARCH_AOV,
-                &[BindingKind::StorageImage, BindingKind::UniformBuffer],
+                &RAYMARCH_BINDINGS,
                 0,
             )?,
             composite: ComputePipeline::new(

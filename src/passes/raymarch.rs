@@ -42,6 +42,7 @@ pub struct RaymarchParams {
     pub disk: [f32; 4],
     pub disk_e1: [f32; 4],
     pub disk_e2: [f32; 4],
+    pub disk_temp: [f32; 4],
     pub sky: [f32; 4],
     pub integ: [f32; 4],
     pub counts: [u32; 4],
@@ -58,6 +59,12 @@ fn v4(v: glam::DVec3, w: f64) -> [f32; 4] {
 /// f32 rounding, not by the step: see tests/geodesic.rs.)
 pub fn binet_step(tolerance: f64) -> f64 {
     (1.4 * tolerance.powf(0.25)).clamp(0.002, 0.2)
+}
+
+/// r⁻³ (1 - sqrt(r_in / r)) at the Novikov-Thorne peak, the shader's normaliser.
+fn nt_profile_at_peak(r_in: f64) -> f64 {
+    let r = crate::physics::disk::peak_radius(r_in.max(1e-6));
+    r.powi(-3) * (1.0 - (r_in / r).sqrt())
 }
 
 impl RaymarchParams {
@@ -91,6 +98,12 @@ impl RaymarchParams {
             ],
             disk_e1: v4(e1, 0.0),
             disk_e2: v4(e2, 0.0),
+            disk_temp: [
+                scene.disk.temperature_k as f32,
+                nt_profile_at_peak(scene.disk.inner_radius) as f32,
+                f32::from(u8::from(scene.physics.doppler)),
+                f32::from(u8::from(scene.physics.gravitational_redshift)),
+            ],
             sky: [
                 sky_kind,
                 scene.sky.squares as f32,
@@ -100,7 +113,7 @@ impl RaymarchParams {
             integ: [
                 scene.quality.tolerance as f32,
                 scene.escape_radius() as f32,
-                1.0,
+                f32::from(u8::from(scene.physics.gravity)),
                 binet_step(scene.quality.tolerance) as f32,
             ],
             counts: [
@@ -119,6 +132,7 @@ pub fn add_raymarch<'a>(
     graph: &mut Graph<'a>,
     pipelines: &'a Pipelines,
     params: vk::Buffer,
+    disk_lut: &ImageHandle,
     width: u32,
     height: u32,
     output: RaymarchOutput,
@@ -128,9 +142,10 @@ pub fn add_raymarch<'a>(
         RaymarchOutput::Geodesic => ("geodesic aov", AOV_FORMAT, &pipelines.raymarch_aov),
     };
     let mut hdr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
-    let out = hdr.clone();
+    let (out, lut) = (hdr.clone(), disk_lut.clone());
     graph
         .add_pass("raymarch")
+        .read(disk_lut, Access::ComputeSampledRead, Mips::ALL)
         .write(&mut hdr, Access::ComputeStorageWrite, Mips::ALL)
         .record(move |ctx| {
             bind_compute(
@@ -140,6 +155,7 @@ pub fn add_raymarch<'a>(
                 &[
                     Descriptor::StorageImage(ctx.view(&out, 0)),
                     Descriptor::UniformBuffer(params),
+                    Descriptor::SampledImage(ctx.full_view(&lut), pipelines.linear_clamp.sampler),
                 ],
             )?;
             // SAFETY: the pipeline and its descriptors are bound on a recording buffer.

@@ -2,6 +2,8 @@
 //! disk's redshift. Used by the tests (against closed forms, and against the
 //! GPU ray by ray) and to draw photon paths.
 
+pub mod blackbody;
+pub mod disk;
 pub mod geodesic;
 pub mod redshift;
 

@@ -110,7 +110,10 @@ pub struct Disk {
     pub normal: [f64; 3],
     pub inner_radius: f64,
     pub outer_radius: f64,
+    /// Emission scale (luminance of the hottest ring, seen unshifted).
     pub brightness: f64,
+    /// Temperature of the hottest ring, kelvin (Novikov-Thorne profile).
+    pub temperature_k: f64,
 }
 
 impl Default for Disk {
@@ -120,7 +123,8 @@ impl Default for Disk {
             normal: [0.0, 1.0, 0.0],
             inner_radius: 3.0,
             outer_radius: 12.0,
-            brightness: 1.0,
+            brightness: 0.6,
+            temperature_k: 5500.0,
         }
     }
 }
@@ -147,7 +151,7 @@ impl Default for Sky {
         Sky {
             kind: SkyKind::Checker,
             squares: 24,
-            brightness: 0.25,
+            brightness: 0.12,
         }
     }
 }
@@ -170,6 +174,29 @@ impl Default for Quality {
             steps: 4000,
             tolerance: 1e-5,
             escape_radius: 0.0,
+        }
+    }
+}
+
+/// Physics switches: the film look (Doppler and redshift off) and the
+/// physical look are one switch apart.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Physics {
+    /// Bend light (off: straight rays; the horizon still absorbs).
+    pub gravity: bool,
+    /// Doppler shift and beaming of the orbiting disk.
+    pub doppler: bool,
+    /// Gravitational redshift of the disk's light.
+    pub gravitational_redshift: bool,
+}
+
+impl Default for Physics {
+    fn default() -> Self {
+        Physics {
+            gravity: true,
+            doppler: true,
+            gravitational_redshift: true,
         }
     }
 }
@@ -199,6 +226,7 @@ pub struct Scene {
     pub disk: Disk,
     pub sky: Sky,
     pub quality: Quality,
+    pub physics: Physics,
     pub post: Post,
 }
 
@@ -210,6 +238,7 @@ impl Default for Scene {
             disk: Disk::default(),
             sky: Sky::default(),
             quality: Quality::default(),
+            physics: Physics::default(),
             post: Post::default(),
         }
     }
@@ -402,6 +431,13 @@ impl Scene {
                 vec![Key("disk"), Key("brightness")],
                 d.brightness.to_string(),
                 "must be a finite number >= 0",
+            );
+        }
+        if !(d.temperature_k.is_finite() && d.temperature_k > 0.0) {
+            return err(
+                vec![Key("disk"), Key("temperature_k")],
+                d.temperature_k.to_string(),
+                "must be a finite temperature > 0 kelvin",
             );
         }
         if d.kind == DiskKind::Volumetric {
