@@ -49,6 +49,16 @@ enum Command {
         #[arg(long, value_enum, default_value_t = Aov::Beauty)]
         aov: Aov,
     },
+    /// Plot photon paths in the hole's equatorial plane (SVG), with the horizon,
+    /// the photon sphere and the ISCO.
+    Trace {
+        /// Scene TOML file or preset (its first hole sets rs).
+        #[arg(long)]
+        scene: Option<String>,
+        /// Output SVG file.
+        #[arg(long, default_value = "paths.svg")]
+        out: PathBuf,
+    },
     /// Render N frames and print GPU time per pass (median, p95, share of frame).
     #[command(after_help = presets_help())]
     Profile {
@@ -135,6 +145,15 @@ fn run(cli: Cli) -> Result<ExitCode, Error> {
                 renderer.device_name()
             );
             Ok(validation_verdict(&renderer))
+        }
+        Command::Trace { scene, out } => {
+            let scene = match scene {
+                Some(s) => Scene::load(&s)?,
+                None => Scene::builtin_default()?,
+            };
+            blackhole::trace_plot::write_svg(&scene, &out)?;
+            println!("wrote {}", out.display());
+            Ok(ExitCode::SUCCESS)
         }
         Command::Profile {
             scene,

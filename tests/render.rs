@@ -201,3 +201,65 @@ fn doppler_brightens_the_approaching_side_and_the_film_look_is_symmetric() {
         }
     }
 }
+
+#[test]
+fn bad_aov_requests_are_rejected_before_rendering() {
+    let dir = scratch();
+    let png = path_in(&dir, "aov.png");
+    let mut c = blackhole();
+    c.args(["render", "--aov", "geodesic", "--out"]).arg(&png);
+    let (code, _, stderr) = run(c);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains("--aov geodesic") && stderr.contains(".exr"),
+        "{stderr}"
+    );
+    assert!(!png.exists());
+
+    let exr = path_in(&dir, "aov.exr");
+    let mut c = blackhole();
+    c.args(["render", "--aov", "normals", "--out"]).arg(&exr);
+    let (code, _, stderr) = run(c);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains("normals") && stderr.contains("geodesic"),
+        "{stderr}"
+    );
+    assert!(!exr.exists());
+
+    let scene = path_in(&dir, "volumetric.toml");
+    std::fs::write(&scene, "[disk]\nkind = \"volumetric\"\n").unwrap();
+    let mut c = blackhole();
+    c.args(["render", "--aov", "geodesic", "--scene"])
+        .arg(&scene)
+        .arg("--out")
+        .arg(&exr);
+    let (code, _, stderr) = run(c);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains("disk.kind") && stderr.contains("volumetric"),
+        "{stderr}"
+    );
+    assert!(!exr.exists());
+}
+
+#[test]
+fn trace_writes_an_svg_of_photon_paths() {
+    let dir = scratch();
+    let out = path_in(&dir, "paths.svg");
+    let mut c = blackhole();
+    c.args(["trace", "--out"]).arg(&out);
+    let (code, _, stderr) = run(c);
+    assert_eq!(code, 0, "{stderr}");
+    let svg = std::fs::read_to_string(&out).expect("SVG written");
+    assert!(svg.starts_with("<svg"));
+    for label in [
+        "horizon",
+        "photon sphere, 1.5 rs",
+        "ISCO, 3 rs",
+        "x / rs",
+        "y / rs",
+    ] {
+        assert!(svg.contains(label), "missing {label}");
+    }
+}
