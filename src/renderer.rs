@@ -214,6 +214,7 @@ impl Renderer {
             width,
             height,
             mode,
+            scene.black_holes.len() == 1 && scene.physics.gravity,
         );
         let result = match kind {
             OutputKind::Ldr => {

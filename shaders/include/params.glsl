@@ -24,7 +24,7 @@ layout(std140, binding = 1) uniform RaymarchParams {
     vec4 disk_e2;      // xyz: e1 x normal (azimuth 90 degrees)
     vec4 disk_temp;    // x: peak temperature (K), y: NT profile at the peak, z: Doppler on, w: redshift on
     vec4 sky;          // x: sky kind, y: squares, z: brightness
-    vec4 integ;        // x: tolerance, y: escape radius, z: gravity on (1/0), w: Binet step (rad)
+    vec4 integ;        // x: tolerance, y: escape radius, z: gravity on (1/0), w: Binet far-field step (rad)
     uvec4 counts;      // x: hole count, y: width, z: height, w: step budget
     vec4 holes[MAX_HOLES]; // xyz: position, w: rs
 } P;

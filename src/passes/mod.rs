@@ -18,8 +18,10 @@ const RAYMARCH_BINDINGS: [BindingKind; 3] = [
 
 /// Pipelines and samplers the passes use, created once per renderer.
 pub struct Pipelines {
-    pub raymarch: ComputePipeline,
-    pub raymarch_aov: ComputePipeline,
+    /// Ray march: [general (any holes, gravity off), one hole (Binet)].
+    pub raymarch: [ComputePipeline; 2],
+    /// Ray march writing the geodesic AOV, same two kinds.
+    pub raymarch_aov: [ComputePipeline; 2],
     pub composite: ComputePipeline,
     pub linear_clamp: Sampler,
 }
@@ -28,20 +30,19 @@ impl Pipelines {
     /// Builds every pipeline from the embedded SPIR-V.
     pub fn new(gpu: &Arc<Gpu>) -> Result<Self> {
         Ok(Pipelines {
-            raymarch: ComputePipeline::new(
-                gpu,
-                "raymarch",
-                crate::shaders::RAYMARCH,
-                &RAYMARCH_BINDINGS,
-                0,
-            )?,
-            raymarch_aov: ComputePipeline::new(
-                gpu,
-                "raymarch (geodesic AOV)",
-                crate::shaders::RAYMARCH_AOV,
-                &RAYMARCH_BINDINGS,
-                0,
-            )?,
+            raymarch: [
+                raymarch_pipeline(gpu, "raymarch", crate::shaders::RAYMARCH, false)?,
+                raymarch_pipeline(gpu, "raymarch (one hole)", crate::shaders::RAYMARCH, true)?,
+            ],
+            raymarch_aov: [
+                raymarch_pipeline(gpu, "raymarch aov", crate::shaders::RAYMARCH_AOV, false)?,
+                raymarch_pipeline(
+                    gpu,
+                    "raymarch aov (one hole)",
+                    crate::shaders::RAYMARCH_AOV,
+                    true,
+                )?,
+            ],
             composite: ComputePipeline::new(
                 gpu,
                 "composite",
@@ -52,6 +53,24 @@ impl Pipelines {
             linear_clamp: Sampler::linear_clamp(gpu)?,
         })
     }
+}
+
+/// The ray march specialised for one hole (constant 0, `ONE_HOLE`): the
+/// general Cartesian integrator is then compiled out, not just skipped.
+fn raymarch_pipeline(
+    gpu: &Arc<Gpu>,
+    name: &str,
+    spirv: &[u8],
+    one_hole: bool,
+) -> Result<ComputePipeline> {
+    ComputePipeline::with_constants(
+        gpu,
+        name,
+        spirv,
+        &RAYMARCH_BINDINGS,
+        0,
+        &[u32::from(one_hole)],
+    )
 }
 
 /// Workgroups to cover `n` items with groups of `size`.

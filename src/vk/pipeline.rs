@@ -48,6 +48,20 @@ impl ComputePipeline {
         bindings: &[BindingKind],
         push_constant_size: u32,
     ) -> Result<Self> {
+        Self::with_constants(gpu, name, spirv, bindings, push_constant_size, &[])
+    }
+
+    /// Builds a pipeline, setting specialization constant `i` to `constants[i]`
+    /// (32-bit values; a GLSL `bool` takes 0 or 1). The driver folds them, so a
+    /// branch on one costs nothing at run time.
+    pub fn with_constants(
+        gpu: &Arc<Gpu>,
+        name: &str,
+        spirv: &[u8],
+        bindings: &[BindingKind],
+        push_constant_size: u32,
+        constants: &[u32],
+    ) -> Result<Self> {
         let d = &gpu.device;
         let words = ash::util::read_spv(&mut std::io::Cursor::new(spirv))
             .map_err(|e| Error::Other(format!("reading SPIR-V of `{name}`: {e}")))?;
@@ -95,10 +109,24 @@ impl ComputePipeline {
             let module = d
                 .create_shader_module(&vk::ShaderModuleCreateInfo::default().code(&words), None)
                 .ctx(|| format!("creating the shader module of `{name}`"))?;
-            let stage = vk::PipelineShaderStageCreateInfo::default()
+            let entries: Vec<vk::SpecializationMapEntry> = (0..constants.len() as u32)
+                .map(|i| vk::SpecializationMapEntry {
+                    constant_id: i,
+                    offset: 4 * i,
+                    size: 4,
+                })
+                .collect();
+            let data: &[u8] = bytemuck::cast_slice(constants);
+            let spec = vk::SpecializationInfo::default()
+                .map_entries(&entries)
+                .data(data);
+            let mut stage = vk::PipelineShaderStageCreateInfo::default()
                 .stage(vk::ShaderStageFlags::COMPUTE)
                 .module(module)
                 .name(c"main");
+            if !constants.is_empty() {
+                stage = stage.specialization_info(&spec);
+            }
             let info = [vk::ComputePipelineCreateInfo::default()
                 .stage(stage)
                 .layout(this.layout)];
