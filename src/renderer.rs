@@ -188,7 +188,7 @@ impl Renderer {
 
         // Build the frame graph.
         let pipelines = &self.pipelines;
-        let mut g = Graph::new();
+        let mut g = Graph::new(width, height);
         let mut out_buf = g.import_buffer(
             "readback",
             readback.binding(),
@@ -211,8 +211,6 @@ impl Renderer {
             pipelines,
             self.params.buffer,
             &lut,
-            width,
-            height,
             mode,
             scene.black_holes.len() == 1 && scene.physics.gravity,
         );
@@ -324,7 +322,7 @@ fn upload_disk_lut(
     )?;
     staging.mapped_mut()?.copy_from_slice(bytes);
 
-    let mut g = Graph::new();
+    let mut g = Graph::new(desc.width, desc.height);
     let src = g.import_buffer(
         "disk lut staging",
         staging.binding(),

@@ -42,7 +42,7 @@ fn consume(g: &mut Graph<'_>, img: &ImageHandle, mips: Mips) {
 
 #[test]
 fn read_after_write_makes_the_storage_write_visible_and_changes_layout() {
-    let mut g = Graph::new();
+    let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 64, 64));
     g.add_pass("write")
         .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
@@ -72,7 +72,7 @@ fn read_after_write_makes_the_storage_write_visible_and_changes_layout() {
 
 #[test]
 fn write_after_read_waits_for_the_reader_without_a_memory_dependency() {
-    let mut g = Graph::new();
+    let mut g = Graph::new(64, 64);
     let mut img = g.import_image(
         "a",
         ImageDesc::new_2d(FMT, 8, 8),
@@ -106,7 +106,7 @@ fn write_after_read_waits_for_the_reader_without_a_memory_dependency() {
 
 #[test]
 fn write_after_write_orders_the_two_writes() {
-    let mut g = Graph::new();
+    let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
     g.add_pass("first")
         .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
@@ -128,7 +128,7 @@ fn write_after_write_orders_the_two_writes() {
 
 #[test]
 fn second_read_of_a_visible_write_needs_no_barrier() {
-    let mut g = Graph::new();
+    let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
     let mut other = g.create_image("b", ImageDesc::new_2d(FMT, 8, 8));
     g.add_pass("write")
@@ -155,7 +155,7 @@ fn second_read_of_a_visible_write_needs_no_barrier() {
 #[test]
 fn mip_chain_reading_n_writing_n_plus_1_gets_one_barrier_per_level() {
     const LEVELS: u32 = 6;
-    let mut g = Graph::new();
+    let mut g = Graph::new(64, 64);
     let mut img = g.create_image("chain", ImageDesc::new_2d(FMT, 256, 256).with_mips(LEVELS));
     assert_eq!(img.desc.mip_levels, LEVELS);
     g.add_pass("mip0")
@@ -211,7 +211,7 @@ fn mip_chain_reading_n_writing_n_plus_1_gets_one_barrier_per_level() {
 
 #[test]
 fn adjacent_levels_with_identical_barriers_merge_into_one_range() {
-    let mut g = Graph::new();
+    let mut g = Graph::new(64, 64);
     let mut img = g.create_image("m", ImageDesc::new_2d(FMT, 64, 64).with_mips(6));
     g.add_pass("all")
         .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
@@ -231,7 +231,7 @@ fn adjacent_levels_with_identical_barriers_merge_into_one_range() {
 
 #[test]
 fn pass_whose_output_nobody_reads_is_culled() {
-    let mut g = Graph::new();
+    let mut g = Graph::new(64, 64);
     let mut used = g.create_image("used", ImageDesc::new_2d(FMT, 8, 8));
     let mut unused = g.create_image("unused", ImageDesc::new_2d(FMT, 8, 8));
     g.add_pass("useful")
@@ -249,7 +249,7 @@ fn pass_whose_output_nobody_reads_is_culled() {
 
 #[test]
 fn culling_is_per_mip_level() {
-    let mut g = Graph::new();
+    let mut g = Graph::new(64, 64);
     let mut img = g.create_image("m", ImageDesc::new_2d(FMT, 64, 64).with_mips(2));
     g.add_pass("level0")
         .write(&mut img, Access::ComputeStorageWrite, Mips::one(0));
@@ -263,7 +263,7 @@ fn culling_is_per_mip_level() {
 
 #[test]
 fn imported_image_is_left_in_its_requested_final_layout() {
-    let mut g = Graph::new();
+    let mut g = Graph::new(64, 64);
     let mut target = g.import_image(
         "swapchain",
         ImageDesc::new_2d(vk::Format::R8G8B8A8_UNORM, 32, 32),
@@ -286,7 +286,7 @@ fn imported_image_is_left_in_its_requested_final_layout() {
 
 #[test]
 fn readback_buffer_is_made_visible_to_the_host() {
-    let mut g = Graph::new();
+    let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
     let mut buf = g.import_buffer("rb", fake_buffer(), Access::Nothing, Some(Access::HostRead));
     g.add_pass("write")
@@ -304,7 +304,7 @@ fn readback_buffer_is_made_visible_to_the_host() {
 
 #[test]
 fn usage_flags_are_derived_from_declared_accesses() {
-    let mut g = Graph::new();
+    let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
     let mut buf = g.import_buffer("rb", fake_buffer(), Access::Nothing, Some(Access::HostRead));
     g.add_pass("write")
@@ -325,7 +325,7 @@ fn usage_flags_are_derived_from_declared_accesses() {
 
 #[test]
 fn a_mip_outside_the_image_is_a_build_error() {
-    let mut g = Graph::new();
+    let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8).with_mips(2));
     g.add_pass("bad")
         .write(&mut img, Access::ComputeStorageWrite, Mips::one(5));
@@ -336,7 +336,7 @@ fn a_mip_outside_the_image_is_a_build_error() {
 
 #[test]
 fn the_same_mip_declared_twice_in_one_pass_is_a_build_error() {
-    let mut g = Graph::new();
+    let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
     let r = img.clone();
     g.add_pass("twice")
@@ -344,4 +344,22 @@ fn the_same_mip_declared_twice_in_one_pass_is_a_build_error() {
         .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
     consume(&mut g, &img, Mips::ALL);
     assert!(g.compile().is_err());
+}
+
+#[test]
+fn relative_images_follow_the_output_size() {
+    let mut g = Graph::new(1280, 720);
+    let full = g.create_relative("full", FMT, 1, 1);
+    let half = g.create_relative("half", FMT, 2, 5);
+    assert_eq!((full.desc.width, full.desc.height), (1280, 720));
+    assert_eq!(
+        (half.desc.width, half.desc.height, half.desc.mip_levels),
+        (640, 360, 5)
+    );
+    assert_eq!(half.desc.mip_extent(4), (40, 22));
+    let tiny = g.create_relative("tiny", FMT, 4096, 20);
+    assert_eq!(
+        (tiny.desc.width, tiny.desc.height, tiny.desc.mip_levels),
+        (1, 1, 1)
+    );
 }

@@ -124,6 +124,7 @@ pub fn execute(
         images,
         buffers,
         mut passes,
+        ..
     } = graph;
 
     // Realize images: imports as given, transients from the pool.

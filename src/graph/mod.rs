@@ -83,15 +83,45 @@ pub(crate) struct PassNode<'a> {
 /// executed, dropped.
 #[derive(Default)]
 pub struct Graph<'a> {
+    /// Size of the frame's output, which graph-owned images are sized against.
+    output: (u32, u32),
     pub(crate) images: Vec<ImageNode>,
     pub(crate) buffers: Vec<BufferNode>,
     pub(crate) passes: Vec<PassNode<'a>>,
 }
 
 impl<'a> Graph<'a> {
-    /// An empty graph.
-    pub fn new() -> Self {
-        Self::default()
+    /// An empty graph for a `width` x `height` output.
+    pub fn new(width: u32, height: u32) -> Self {
+        Graph {
+            output: (width, height),
+            ..Self::default()
+        }
+    }
+
+    /// The output size given to [`Graph::new`].
+    pub fn output_size(&self) -> (u32, u32) {
+        self.output
+    }
+
+    /// A graph-owned image sized relative to the output: `1 / divisor` of it
+    /// per side (at least one texel), with `mips` levels (clamped to what the
+    /// size allows).
+    pub fn create_relative(
+        &mut self,
+        name: &str,
+        format: ash::vk::Format,
+        divisor: u32,
+        mips: u32,
+    ) -> ImageHandle {
+        let d = divisor.max(1);
+        let desc = ImageDesc::new_2d(
+            format,
+            (self.output.0 / d).max(1),
+            (self.output.1 / d).max(1),
+        )
+        .with_mips(mips);
+        self.create_image(name, desc)
     }
 
     /// A graph-owned image, created once and reused across frames.

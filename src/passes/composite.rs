@@ -31,6 +31,7 @@ pub fn add_composite<'a>(
 ) -> ImageHandle {
     let (width, height) = (hdr.desc.width, hdr.desc.height);
     let mut ldr = graph.create_image("ldr", ImageDesc::new_2d(LDR_FORMAT, width, height));
+    debug_assert_eq!((width, height), graph.output_size());
     let (input, output) = (hdr.clone(), ldr.clone());
     graph
         .add_pass("composite")

@@ -11,7 +11,7 @@ use ash::vk;
 use bytemuck::{Pod, Zeroable};
 
 use super::{Pipelines, groups};
-use crate::graph::{Graph, ImageDesc, ImageHandle, Mips};
+use crate::graph::{Graph, ImageHandle, Mips};
 use crate::scene::{DiskKind, MAX_HOLES, Scene, SkyKind};
 use crate::vk::{Access, Descriptor, bind_compute};
 
@@ -134,8 +134,6 @@ pub fn add_raymarch<'a>(
     pipelines: &'a Pipelines,
     params: vk::Buffer,
     disk_lut: &ImageHandle,
-    width: u32,
-    height: u32,
     output: RaymarchOutput,
     one_hole: bool,
 ) -> ImageHandle {
@@ -144,7 +142,8 @@ pub fn add_raymarch<'a>(
         RaymarchOutput::Geodesic => ("geodesic aov", AOV_FORMAT, &pipelines.raymarch_aov),
     };
     let pipeline = &kinds[usize::from(one_hole)];
-    let mut hdr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
+    let (width, height) = graph.output_size();
+    let mut hdr = graph.create_relative(name, format, 1, 1);
     let (out, lut) = (hdr.clone(), disk_lut.clone());
     graph
         .add_pass("raymarch")
