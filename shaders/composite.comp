@@ -1,21 +1,45 @@
 #version 460
-// Composite: exposure, a filmic tone map (Narkowicz's ACES fit, 2016) and sRGB
-// encoding into an 8-bit image.
+// Composite: bloom added to the HDR image, exposure in EV stops, a filmic tone
+// map, sRGB encoding and a small triangular dither so 8-bit gradients do not
+// band. Tone maps: Narkowicz's one-line fit of the ACES RRT+ODT ("ACES Filmic
+// Tone Mapping Curve", 2016) and Stephen Hill's fuller fit (the
+// "BakingLab" RRT+ODT fit with the sRGB-to-ACES input and output matrices).
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D hdr;
 layout(binding = 1, rgba8) uniform writeonly image2D ldr;
+layout(binding = 2) uniform sampler2D bloom;   // level 0 of the bloom chain
+
+#define TONEMAP_ACES_HILL 0
+#define TONEMAP_ACES_NARKOWICZ 1
+#define TONEMAP_LINEAR 2
 
 layout(push_constant) uniform Push {
-    float exposure;  // linear multiplier, 2^EV
+    float exposure;        // linear multiplier, 2^EV
     uint width;
     uint height;
+    float bloom_strength;  // 0: no bloom
+    uint tonemap;
+    float dither;          // amplitude in 8-bit steps (0: off)
 } pc;
 
 vec3 aces_narkowicz(vec3 x) {
     const float a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
     return clamp((x * (a * x + b)) / (x * (c * x + d) + e), 0.0, 1.0);
+}
+
+vec3 aces_hill(vec3 color) {
+    const mat3 input_mat = mat3(0.59719, 0.07600, 0.02840,
+                                0.35458, 0.90834, 0.13383,
+                                0.04823, 0.01566, 0.83777);
+    const mat3 output_mat = mat3(1.60475, -0.10208, -0.00327,
+                                 -0.53108, 1.10813, -0.07276,
+                                 -0.07367, -0.00605, 1.07602);
+    vec3 v = input_mat * color;
+    vec3 a = v * (v + 0.0245786) - 0.000090537;
+    vec3 b = v * (0.983729 * v + 0.4329510) + 0.238081;
+    return clamp(output_mat * (a / b), 0.0, 1.0);
 }
 
 vec3 srgb_encode(vec3 c) {
@@ -24,9 +48,29 @@ vec3 srgb_encode(vec3 c) {
     return mix(hi, lo, lessThanEqual(c, vec3(0.0031308)));
 }
 
+// Integer hash (Jarzynski & Olano 2020, PCG-style) to a float in [0, 1).
+float hash(uvec2 p, uint salt) {
+    uint v = p.x * 1664525u + p.y * 1013904223u + salt * 2654435769u;
+    v = v * 747796405u + 2891336453u;
+    uint w = ((v >> ((v >> 28u) + 4u)) ^ v) * 277803737u;
+    return float((w >> 22u) ^ w) * (1.0 / 4294967296.0);
+}
+
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     if (px.x >= int(pc.width) || px.y >= int(pc.height)) return;
-    vec3 c = texelFetch(hdr, px, 0).rgb * pc.exposure;
-    imageStore(ldr, px, vec4(srgb_encode(aces_narkowicz(c)), 1.0));
+    vec3 c = texelFetch(hdr, px, 0).rgb;
+    if (pc.bloom_strength > 0.0) {
+        vec2 uv = (vec2(px) + 0.5) / vec2(pc.width, pc.height);
+        c += pc.bloom_strength * textureLod(bloom, uv, 0.0).rgb;
+    }
+    c *= pc.exposure;
+    vec3 t = pc.tonemap == TONEMAP_ACES_HILL ? aces_hill(c)
+           : pc.tonemap == TONEMAP_ACES_NARKOWICZ ? aces_narkowicz(c)
+           : clamp(c, 0.0, 1.0);
+    vec3 s = srgb_encode(t);
+    // Triangular dither of +-1 step, zero mean.
+    float n = hash(uvec2(px), 0u) + hash(uvec2(px), 1u) - 1.0;
+    s += n * pc.dither / 255.0;
+    imageStore(ldr, px, vec4(clamp(s, 0.0, 1.0), 1.0));
 }

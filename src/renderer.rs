@@ -216,7 +216,15 @@ impl Renderer {
         );
         let result = match kind {
             OutputKind::Ldr => {
-                composite::add_composite(&mut g, pipelines, &hdr, scene.post.exposure_ev as f32)
+                let bloom = passes::bloom::add_bloom(&mut g, pipelines, &hdr, &scene.bloom);
+                composite::add_composite(
+                    &mut g,
+                    pipelines,
+                    &hdr,
+                    bloom.as_ref(),
+                    &scene.bloom,
+                    &scene.post,
+                )
             }
             OutputKind::Hdr | OutputKind::Geodesic => hdr,
         };
@@ -251,6 +259,88 @@ impl Renderer {
                     .collect(),
             ),
         };
+        Ok(Frame {
+            width,
+            height,
+            pixels,
+            timings,
+        })
+    }
+
+    /// Runs the post-processing chain (bloom, exposure, tone map) on an HDR
+    /// image given as RGBA f32 rows, row 0 at the top; returns the 8-bit frame.
+    pub fn post_process(
+        &mut self,
+        hdr: &[f32],
+        width: u32,
+        height: u32,
+        bloom: &crate::scene::Bloom,
+        post: &crate::scene::Post,
+    ) -> Result<Frame> {
+        let texels = width as usize * height as usize;
+        if width == 0 || height == 0 || hdr.len() != 4 * texels {
+            return Err(Error::Usage(format!(
+                "post_process: {} floats do not make a {width}x{height} RGBA image",
+                hdr.len()
+            )));
+        }
+        let bytes: &[u8] = bytemuck::cast_slice(hdr);
+        let mut staging = Buffer::new(
+            &self.gpu,
+            "post input staging",
+            bytes.len() as u64,
+            vk::BufferUsageFlags::TRANSFER_SRC,
+            MemoryLocation::CpuToGpu,
+        )?;
+        staging.mapped_mut()?.copy_from_slice(bytes);
+        let needed = 4 * texels as u64;
+        if self.readback.as_ref().is_none_or(|b| b.size < needed) {
+            self.readback = None;
+            self.readback = Some(Buffer::new(
+                &self.gpu,
+                "readback",
+                needed,
+                vk::BufferUsageFlags::TRANSFER_DST,
+                MemoryLocation::GpuToCpu,
+            )?);
+        }
+        let readback = self
+            .readback
+            .as_ref()
+            .ok_or_else(|| Error::Other("readback buffer missing".into()))?;
+
+        let pipelines = &self.pipelines;
+        let mut g = Graph::new(width, height);
+        let src = g.import_buffer(
+            "post input staging",
+            staging.binding(),
+            Access::HostWrite,
+            None,
+        );
+        let mut out_buf = g.import_buffer(
+            "readback",
+            readback.binding(),
+            Access::Nothing,
+            Some(Access::HostRead),
+        );
+        let mut input = g.create_relative("hdr input", vk::Format::R32G32B32A32_SFLOAT, 1, 1);
+        copy::add_upload(&mut g, &src, &mut input);
+        let blur = passes::bloom::add_bloom(&mut g, pipelines, &input, bloom);
+        let ldr = composite::add_composite(&mut g, pipelines, &input, blur.as_ref(), bloom, post);
+        copy::add_copy_to_buffer(&mut g, &ldr, &mut out_buf);
+        let compiled = g.compile()?;
+        let cmd = self.commands.begin()?;
+        let names = graph::execute::execute(
+            g,
+            &compiled,
+            &self.gpu,
+            cmd,
+            &mut self.transients,
+            self.timestamps.as_ref(),
+        )?;
+        self.commands.submit_and_wait()?;
+        let timings = self.read_timings(&names)?;
+        let pixels = Pixels::Rgba8(readback.mapped()?[..needed as usize].to_vec());
         Ok(Frame {
             width,
             height,

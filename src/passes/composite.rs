@@ -1,5 +1,6 @@
-//! Composite: exposure (EV stops), a filmic tone map and sRGB encoding into an
-//! 8-bit image. The tone curve is Narkowicz's fit of the ACES RRT+ODT
+//! Composite: bloom added to the HDR image, exposure (EV stops), a filmic tone
+//! map, sRGB encoding and a triangular dither into an 8-bit image. Tone curves:
+//! Stephen Hill's RRT+ODT fit of ACES (default) and Narkowicz's one-line fit
 //! ("ACES Filmic Tone Mapping Curve", 2016).
 
 use ash::vk;
@@ -7,6 +8,7 @@ use bytemuck::{Pod, Zeroable};
 
 use super::{Pipelines, groups};
 use crate::graph::{Graph, ImageDesc, ImageHandle, Mips};
+use crate::scene::{Bloom, Post, Tonemap};
 use crate::vk::{Access, Descriptor, bind_compute, push_constants};
 
 /// 8-bit output format (sRGB-encoded values in a UNORM image: storage images
@@ -20,38 +22,66 @@ pub struct CompositePush {
     pub exposure: f32,
     pub width: u32,
     pub height: u32,
+    pub bloom_strength: f32,
+    pub tonemap: u32,
+    pub dither: f32,
 }
 
-/// Adds the composite; returns the 8-bit image.
+/// Adds the composite of `hdr` (plus `bloom`, level 0, if given); returns the
+/// 8-bit image.
 pub fn add_composite<'a>(
     graph: &mut Graph<'a>,
     pipelines: &'a Pipelines,
     hdr: &ImageHandle,
-    exposure_ev: f32,
+    bloom: Option<&ImageHandle>,
+    bloom_settings: &Bloom,
+    post: &Post,
 ) -> ImageHandle {
     let (width, height) = (hdr.desc.width, hdr.desc.height);
     let mut ldr = graph.create_image("ldr", ImageDesc::new_2d(LDR_FORMAT, width, height));
-    debug_assert_eq!((width, height), graph.output_size());
-    let (input, output) = (hdr.clone(), ldr.clone());
-    graph
+    let (input, output, blur) = (hdr.clone(), ldr.clone(), bloom.cloned());
+    // The up chain sums every level into level 0: divide by their count so
+    // `strength` means the same for any number of levels.
+    let bloom_strength = match bloom {
+        Some(b) => (bloom_settings.strength / f64::from(b.desc.mip_levels)) as f32,
+        None => 0.0,
+    };
+    let push = CompositePush {
+        exposure: post.exposure_ev.exp2() as f32,
+        width,
+        height,
+        bloom_strength,
+        tonemap: match post.tonemap {
+            Tonemap::AcesHill => 0,
+            Tonemap::AcesNarkowicz => 1,
+            Tonemap::Linear => 2,
+        },
+        dither: if post.dither { 1.0 } else { 0.0 },
+    };
+    let mut pass = graph
         .add_pass("composite")
-        .read(hdr, Access::ComputeSampledRead, Mips::ALL)
-        .write(&mut ldr, Access::ComputeStorageWrite, Mips::ALL)
+        .read(hdr, Access::ComputeSampledRead, Mips::ALL);
+    if let Some(b) = bloom {
+        pass = pass.read(b, Access::ComputeSampledRead, Mips::one(0));
+    }
+    pass.write(&mut ldr, Access::ComputeStorageWrite, Mips::ALL)
         .record(move |ctx| {
+            let sampler = pipelines.linear_clamp.sampler;
+            // Without bloom the binding still needs an image; the shader skips it.
+            let bloom_view = match &blur {
+                Some(b) => ctx.view(b, 0),
+                None => ctx.full_view(&input),
+            };
             bind_compute(
                 ctx.gpu,
                 ctx.cmd,
                 &pipelines.composite,
                 &[
-                    Descriptor::SampledImage(ctx.full_view(&input), pipelines.linear_clamp.sampler),
+                    Descriptor::SampledImage(ctx.full_view(&input), sampler),
                     Descriptor::StorageImage(ctx.view(&output, 0)),
+                    Descriptor::SampledImage(bloom_view, sampler),
                 ],
             )?;
-            let push = CompositePush {
-                exposure: exposure_ev.exp2(),
-                width,
-                height,
-            };
             push_constants(
                 ctx.gpu,
                 ctx.cmd,

@@ -1,6 +1,7 @@
 //! Effects, one per file. Each is a function that adds passes to a graph and
 //! returns the images it produced; none writes a barrier.
 
+pub mod bloom;
 pub mod composite;
 pub mod copy;
 pub mod raymarch;
@@ -23,6 +24,8 @@ pub struct Pipelines {
     /// Ray march writing the geodesic AOV, same two kinds.
     pub raymarch_aov: [ComputePipeline; 2],
     pub composite: ComputePipeline,
+    pub bloom_down: ComputePipeline,
+    pub bloom_up: ComputePipeline,
     pub linear_clamp: Sampler,
 }
 
@@ -47,8 +50,26 @@ impl Pipelines {
                 gpu,
                 "composite",
                 crate::shaders::COMPOSITE,
-                &[BindingKind::SampledImage, BindingKind::StorageImage],
+                &[
+                    BindingKind::SampledImage,
+                    BindingKind::StorageImage,
+                    BindingKind::SampledImage,
+                ],
                 std::mem::size_of::<composite::CompositePush>() as u32,
+            )?,
+            bloom_down: ComputePipeline::new(
+                gpu,
+                "bloom down",
+                crate::shaders::BLOOM_DOWN,
+                &[BindingKind::SampledImage, BindingKind::StorageImage],
+                std::mem::size_of::<bloom::BloomDownPush>() as u32,
+            )?,
+            bloom_up: ComputePipeline::new(
+                gpu,
+                "bloom up",
+                crate::shaders::BLOOM_UP,
+                &[BindingKind::SampledImage, BindingKind::StorageImage],
+                std::mem::size_of::<bloom::BloomUpPush>() as u32,
             )?,
             linear_clamp: Sampler::linear_clamp(gpu)?,
         })

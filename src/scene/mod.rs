@@ -123,8 +123,8 @@ impl Default for Disk {
             normal: [0.0, 1.0, 0.0],
             inner_radius: 3.0,
             outer_radius: 12.0,
-            brightness: 0.6,
-            temperature_k: 5500.0,
+            brightness: 1.2,
+            temperature_k: 6000.0,
         }
     }
 }
@@ -201,17 +201,64 @@ impl Default for Physics {
     }
 }
 
+/// The tone curve of the 8-bit output.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Tonemap {
+    /// Stephen Hill's RRT+ODT fit of ACES (the fuller one).
+    AcesHill,
+    /// Krzysztof Narkowicz's one-line ACES fit.
+    AcesNarkowicz,
+    /// Clamp only (for checking values).
+    Linear,
+}
+
 /// Post-processing.
 #[derive(Clone, Debug, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Post {
     /// Exposure in EV stops (x 2^ev before tone mapping).
     pub exposure_ev: f64,
+    pub tonemap: Tonemap,
+    /// Triangular dither of +-1 step in the 8-bit output.
+    pub dither: bool,
 }
 
 impl Default for Post {
     fn default() -> Self {
-        Post { exposure_ev: 0.0 }
+        Post {
+            exposure_ev: 0.0,
+            tonemap: Tonemap::AcesHill,
+            dither: true,
+        }
+    }
+}
+
+/// The bloom mip chain.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Bloom {
+    /// How much of the blurred bright light is added (0: no bloom, no passes).
+    pub strength: f64,
+    /// Brightest-channel value above which light blooms.
+    pub threshold: f64,
+    /// Width of the soft knee around the threshold.
+    pub knee: f64,
+    /// Mip levels of the chain, 1 to 8 (each halves the size).
+    pub levels: u32,
+    /// Tent radius of the upsample, in texels of the smaller level.
+    pub radius: f64,
+}
+
+impl Default for Bloom {
+    fn default() -> Self {
+        Bloom {
+            strength: 0.6,
+            threshold: 1.0,
+            knee: 0.5,
+            levels: 6,
+            radius: 1.0,
+        }
     }
 }
 
@@ -227,6 +274,7 @@ pub struct Scene {
     pub sky: Sky,
     pub quality: Quality,
     pub physics: Physics,
+    pub bloom: Bloom,
     pub post: Post,
 }
 
@@ -239,6 +287,7 @@ impl Default for Scene {
             sky: Sky::default(),
             quality: Quality::default(),
             physics: Physics::default(),
+            bloom: Bloom::default(),
             post: Post::default(),
         }
     }
@@ -484,6 +533,34 @@ impl Scene {
                 vec![Key("quality"), Key("escape_radius")],
                 q.escape_radius.to_string(),
                 "must be a finite number >= 0 (0 = automatic)",
+            );
+        }
+        let b = &self.bloom;
+        for (name, v) in [
+            ("strength", b.strength),
+            ("threshold", b.threshold),
+            ("knee", b.knee),
+        ] {
+            if !(v.is_finite() && v >= 0.0) {
+                return err(
+                    vec![Key("bloom"), Key(name)],
+                    v.to_string(),
+                    "must be a finite number >= 0",
+                );
+            }
+        }
+        if !(1..=8).contains(&b.levels) {
+            return err(
+                vec![Key("bloom"), Key("levels")],
+                b.levels.to_string(),
+                "must be 1 to 8",
+            );
+        }
+        if !(b.radius.is_finite() && b.radius > 0.0) {
+            return err(
+                vec![Key("bloom"), Key("radius")],
+                b.radius.to_string(),
+                "must be a finite number > 0",
             );
         }
         if !self.post.exposure_ev.is_finite() {

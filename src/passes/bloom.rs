@@ -1,0 +1,187 @@
+//! Bloom: a bright pass and a downsample chain into the mip levels of one
+//! half-resolution image, then an upsample chain that adds each level into the
+//! next larger one (Jimenez, "Next Generation Post Processing in Call of Duty:
+//! Advanced Warfare", SIGGRAPH 2014: 13-tap downsample with a Karis average on
+//! the first level, 3x3 tent upsample).
+//!
+//! One graph pass per level, so each level gets its own barriers (only the
+//! two mips it touches) and its own timestamp.
+
+use ash::vk;
+use bytemuck::{Pod, Zeroable};
+
+use super::{Pipelines, groups};
+use crate::graph::{Graph, ImageHandle, Mips};
+use crate::scene::Bloom;
+use crate::vk::{Access, Descriptor, bind_compute, push_constants};
+
+/// Format of the bloom chain.
+pub const BLOOM_FORMAT: vk::Format = vk::Format::R16G16B16A16_SFLOAT;
+
+/// Push constants of `shaders/bloom_down.comp`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct BloomDownPush {
+    pub src_texel: [f32; 2],
+    pub dst_size: [u32; 2],
+    pub threshold: f32,
+    pub knee: f32,
+    pub first: u32,
+}
+
+/// Push constants of `shaders/bloom_up.comp`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct BloomUpPush {
+    pub src_texel: [f32; 2],
+    pub dst_size: [u32; 2],
+    pub radius: f32,
+}
+
+/// Adds the chain reading `hdr`; returns the bloom image, whose level 0 holds
+/// the sum of all levels. `None` when the strength is 0 (nothing to add).
+pub fn add_bloom<'a>(
+    graph: &mut Graph<'a>,
+    pipelines: &'a Pipelines,
+    hdr: &ImageHandle,
+    settings: &Bloom,
+) -> Option<ImageHandle> {
+    if settings.strength <= 0.0 {
+        return None;
+    }
+    let mut chain = graph.create_relative("bloom", BLOOM_FORMAT, 2, settings.levels);
+    let levels = chain.desc.mip_levels;
+    let sampler = pipelines.linear_clamp.sampler;
+    let (threshold, knee, radius) = (
+        settings.threshold as f32,
+        settings.knee as f32,
+        settings.radius as f32,
+    );
+
+    // Bright pass + first downsample: full-resolution HDR -> level 0.
+    {
+        let (src, dst) = (hdr.clone(), chain.clone());
+        let (w, h) = chain.desc.mip_extent(0);
+        let texel = [1.0 / hdr.desc.width as f32, 1.0 / hdr.desc.height as f32];
+        graph
+            .add_pass("bloom prefilter")
+            .read(hdr, Access::ComputeSampledRead, Mips::ALL)
+            .write(&mut chain, Access::ComputeStorageWrite, Mips::one(0))
+            .record(move |ctx| {
+                bind_compute(
+                    ctx.gpu,
+                    ctx.cmd,
+                    &pipelines.bloom_down,
+                    &[
+                        Descriptor::SampledImage(ctx.full_view(&src), sampler),
+                        Descriptor::StorageImage(ctx.view(&dst, 0)),
+                    ],
+                )?;
+                let push = BloomDownPush {
+                    src_texel: texel,
+                    dst_size: [w, h],
+                    threshold,
+                    knee,
+                    first: 1,
+                };
+                push_constants(
+                    ctx.gpu,
+                    ctx.cmd,
+                    &pipelines.bloom_down,
+                    bytemuck::bytes_of(&push),
+                );
+                // SAFETY: pipeline and descriptors bound on a recording buffer.
+                unsafe {
+                    ctx.gpu
+                        .device
+                        .cmd_dispatch(ctx.cmd, groups(w, 8), groups(h, 8), 1)
+                };
+                Ok(())
+            });
+    }
+
+    // Downsample chain: level n -> level n + 1.
+    for n in 0..levels - 1 {
+        let (src, dst) = (chain.clone(), chain.clone());
+        let (sw, sh) = chain.desc.mip_extent(n);
+        let (w, h) = chain.desc.mip_extent(n + 1);
+        let read = chain.clone();
+        graph
+            .add_pass(&format!("bloom down {}", n + 1))
+            .read(&read, Access::ComputeSampledRead, Mips::one(n))
+            .write(&mut chain, Access::ComputeStorageWrite, Mips::one(n + 1))
+            .record(move |ctx| {
+                bind_compute(
+                    ctx.gpu,
+                    ctx.cmd,
+                    &pipelines.bloom_down,
+                    &[
+                        Descriptor::SampledImage(ctx.view(&src, n), sampler),
+                        Descriptor::StorageImage(ctx.view(&dst, n + 1)),
+                    ],
+                )?;
+                let push = BloomDownPush {
+                    src_texel: [1.0 / sw as f32, 1.0 / sh as f32],
+                    dst_size: [w, h],
+                    threshold: 0.0,
+                    knee: 0.0,
+                    first: 0,
+                };
+                push_constants(
+                    ctx.gpu,
+                    ctx.cmd,
+                    &pipelines.bloom_down,
+                    bytemuck::bytes_of(&push),
+                );
+                // SAFETY: as above.
+                unsafe {
+                    ctx.gpu
+                        .device
+                        .cmd_dispatch(ctx.cmd, groups(w, 8), groups(h, 8), 1)
+                };
+                Ok(())
+            });
+    }
+
+    // Upsample chain: level n + 1 tent-filtered and added into level n.
+    for n in (0..levels - 1).rev() {
+        let (src, dst) = (chain.clone(), chain.clone());
+        let (sw, sh) = chain.desc.mip_extent(n + 1);
+        let (w, h) = chain.desc.mip_extent(n);
+        let read = chain.clone();
+        graph
+            .add_pass(&format!("bloom up {n}"))
+            .read(&read, Access::ComputeSampledRead, Mips::one(n + 1))
+            .write(&mut chain, Access::ComputeStorageReadWrite, Mips::one(n))
+            .record(move |ctx| {
+                bind_compute(
+                    ctx.gpu,
+                    ctx.cmd,
+                    &pipelines.bloom_up,
+                    &[
+                        Descriptor::SampledImage(ctx.view(&src, n + 1), sampler),
+                        Descriptor::StorageImage(ctx.view(&dst, n)),
+                    ],
+                )?;
+                let push = BloomUpPush {
+                    src_texel: [1.0 / sw as f32, 1.0 / sh as f32],
+                    dst_size: [w, h],
+                    radius,
+                };
+                push_constants(
+                    ctx.gpu,
+                    ctx.cmd,
+                    &pipelines.bloom_up,
+                    bytemuck::bytes_of(&push),
+                );
+                // SAFETY: as above.
+                unsafe {
+                    ctx.gpu
+                        .device
+                        .cmd_dispatch(ctx.cmd, groups(w, 8), groups(h, 8), 1)
+                };
+                Ok(())
+            });
+    }
+    Some(chain)
+}
