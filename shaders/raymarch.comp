@@ -25,6 +25,14 @@ layout(binding = 2) uniform sampler2D disk_lut;
 const float LUT_MIN_K = 500.0;
 const float LUT_MAX_K = 100000.0;
 
+// Luminance-1 linear sRGB colour of a blackbody at t kelvin.
+vec3 blackbody(float t) {
+    float u = (log2(max(t, 1.0)) - log2(LUT_MIN_K)) / (log2(LUT_MAX_K) - log2(LUT_MIN_K));
+    return textureLod(disk_lut, vec2(clamp(u, 0.0, 1.0), 0.5), 0.0).rgb;
+}
+
+#include "sky.glsl"
+
 #define OUT_ESCAPED 0
 #define OUT_CAPTURED 1
 #define OUT_DISK 2
@@ -285,21 +293,6 @@ Hit trace(vec3 x, vec3 v) {
     return hit;
 }
 
-vec3 sky_color(vec3 d) {
-    int kind = int(P.sky.x);
-    if (kind == SKY_CHECKER) {
-        float n = P.sky.y;
-        float phi = atan(d.z, d.x);
-        float theta = acos(clamp(d.y, -1.0, 1.0));
-        float u = (phi / (2.0 * PI) + 0.5) * n;
-        float w = theta / PI * (0.5 * n);
-        bool odd = ((int(floor(u)) + int(floor(w))) & 1) == 1;
-        vec3 c = odd ? vec3(0.85, 0.85, 0.9) : vec3(0.1, 0.14, 0.28);
-        return c * P.sky.z;
-    }
-    return vec3(0.0);
-}
-
 // Light of the thin disk at radius r whose light reaches us shifted by g_full
 // (DESIGN.md section 2): Novikov-Thorne temperature T(r), observed temperature
 // g T coloured by the blackbody table, observed bolometric intensity g^4 times
@@ -314,8 +307,7 @@ vec3 disk_color(float r, float g_full) {
     bool doppler = P.disk_temp.z > 0.5, redshift = P.disk_temp.w > 0.5;
     float g = doppler ? (redshift ? g_full : g_full / g_grav) : (redshift ? g_grav : 1.0);
     float t_obs = g * t_rel * P.disk_temp.x;
-    float u = (log2(max(t_obs, 1.0)) - log2(LUT_MIN_K)) / (log2(LUT_MAX_K) - log2(LUT_MIN_K));
-    vec3 c = textureLod(disk_lut, vec2(clamp(u, 0.0, 1.0), 0.5), 0.0).rgb;
+    vec3 c = blackbody(t_obs);
     float gt = g * t_rel;
     return c * (P.disk.z * gt * gt * gt * gt);
 }
@@ -345,7 +337,7 @@ void main() {
     imageStore(out_img, ivec2(px), aov);
 #else
     vec3 color = vec3(0.0);
-    if (hit.outcome == OUT_ESCAPED) color = sky_color(hit.dir);
+    if (hit.outcome == OUT_ESCAPED) color = sky_color(hit.dir, 2.0 * tan_half / float(hgt));
     else if (hit.outcome == OUT_DISK) color = disk_color(length(hit.pos - P.holes[0].xyz), hit.g);
     imageStore(out_img, ivec2(px), vec4(color, 1.0));
 #endif

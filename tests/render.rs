@@ -46,17 +46,25 @@ fn default_scene_renders_shadow_disk_and_sky_without_validation_messages() {
     let mean = l.iter().sum::<f32>() / l.len() as f32;
     let var = l.iter().map(|v| (v - mean).powi(2)).sum::<f32>() / l.len() as f32;
     assert!(var.sqrt() > 20.0, "luminance std dev {}", var.sqrt());
-    // The sky's checker shows up in the corners: both tones present.
-    let corners = [
-        img.get_pixel(2, 2),
-        img.get_pixel(157, 2),
-        img.get_pixel(2, 87),
-        img.get_pixel(157, 87),
-    ];
-    assert!(
-        corners.iter().all(|p| p[2] >= p[0]),
-        "corners are sky: {corners:?}"
-    );
+    // The default sky is a star field: dark between the stars (the median of
+    // each corner block), with some stars somewhere in the frame.
+    for (x0, y0) in [(0, 0), (150, 0), (0, 80), (150, 80)] {
+        let mut block: Vec<f32> = (0..10)
+            .flat_map(|dy| (0..10).map(move |dx| (x0 + dx, y0 + dy)))
+            .map(|(x, y)| luma(img.get_pixel(x, y)))
+            .collect();
+        block.sort_by(f32::total_cmp);
+        assert!(
+            block[50] < 25.0,
+            "corner ({x0},{y0}) median luma {}",
+            block[50]
+        );
+    }
+    let stars = (0..30)
+        .flat_map(|y| (0..160).map(move |x| (x, y)))
+        .filter(|&(x, y)| luma(img.get_pixel(x, y)) > 60.0)
+        .count();
+    assert!(stars >= 3, "{stars} star pixels in the top rows");
 }
 
 #[test]
@@ -261,5 +269,37 @@ fn trace_writes_an_svg_of_photon_paths() {
         "y / rs",
     ] {
         assert!(svg.contains(label), "missing {label}");
+    }
+}
+
+#[test]
+fn every_preset_renders_validation_clean() {
+    let dir = scratch();
+    for (name, _, _) in blackhole::scene::PRESETS {
+        let out = path_in(&dir, &format!("{name}.png"));
+        let mut c = blackhole();
+        c.args([
+            "render", "--width", "64", "--height", "36", "--scene", name, "--out",
+        ])
+        .arg(&out);
+        let (code, stdout, stderr) = run(c);
+        assert_clean(code, &stdout, &stderr);
+        let img = image::open(&out).expect("PNG written").to_rgb8();
+        let l: Vec<f32> = img.pixels().map(luma).collect();
+        let (lo, hi) = l
+            .iter()
+            .fold((f32::MAX, 0.0f32), |(a, b), &v| (a.min(v), b.max(v)));
+        assert!(hi - lo > 50.0, "preset {name} looks uniform");
+    }
+}
+
+#[test]
+fn help_lists_every_preset() {
+    let mut c = blackhole();
+    c.args(["render", "--help"]);
+    let (code, stdout, _) = run(c);
+    assert_eq!(code, 0);
+    for (name, _, _) in blackhole::scene::PRESETS {
+        assert!(stdout.contains(name), "--help lacks {name}");
     }
 }

@@ -12,6 +12,7 @@
 // Sky kinds (sky.x).
 #define SKY_BLACK 0
 #define SKY_CHECKER 1
+#define SKY_STARS 2
 
 layout(std140, binding = 1) uniform RaymarchParams {
     vec4 cam_pos;      // xyz: camera position; w: tan(vfov / 2)
@@ -23,7 +24,7 @@ layout(std140, binding = 1) uniform RaymarchParams {
     vec4 disk_e1;      // xyz: in-plane basis vector (azimuth 0)
     vec4 disk_e2;      // xyz: e1 x normal (azimuth 90 degrees)
     vec4 disk_temp;    // x: peak temperature (K), y: NT profile at the peak, z: Doppler on, w: redshift on
-    vec4 sky;          // x: sky kind, y: squares, z: brightness
+    vec4 sky;          // x: sky kind, y: checker squares or star density, z: brightness, w: galaxy band
     vec4 integ;        // x: tolerance, y: escape radius, z: gravity on (1/0), w: Binet far-field step (rad)
     uvec4 counts;      // x: hole count, y: width, z: height, w: step budget
     vec4 holes[MAX_HOLES]; // xyz: position, w: rs

@@ -80,9 +80,10 @@ impl RaymarchParams {
             DiskKind::Thin => 1.0,
             DiskKind::Volumetric | DiskKind::None => 0.0,
         };
-        let sky_kind = match scene.sky.kind {
-            SkyKind::Black => 0.0,
-            SkyKind::Checker => 1.0,
+        let (sky_kind, sky_param) = match scene.sky.kind {
+            SkyKind::Black => (0.0, 0.0),
+            SkyKind::Checker => (1.0, f64::from(scene.sky.squares)),
+            SkyKind::Stars => (2.0, scene.sky.star_density),
         };
         let (e1, e2) = crate::physics::geodesic::disk_basis(glam::DVec3::from(scene.disk.normal));
         RaymarchParams {
@@ -107,9 +108,9 @@ impl RaymarchParams {
             ],
             sky: [
                 sky_kind,
-                scene.sky.squares as f32,
+                sky_param as f32,
                 scene.sky.brightness as f32,
-                0.0,
+                scene.sky.galaxy as f32,
             ],
             integ: [
                 scene.quality.tolerance as f32,

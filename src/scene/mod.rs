@@ -133,6 +133,9 @@ impl Default for Disk {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum SkyKind {
+    /// Procedural stars and a faint galaxy band.
+    Stars,
+    /// Checker squares on the celestial sphere (shows lensing clearly).
     Checker,
     Black,
 }
@@ -142,16 +145,23 @@ pub enum SkyKind {
 #[serde(deny_unknown_fields, default)]
 pub struct Sky {
     pub kind: SkyKind,
+    /// Checker squares around the equator.
     pub squares: u32,
+    /// Chance that a star cell holds a star (0 to 1).
+    pub star_density: f64,
+    /// Brightness of the galaxy band (stars sky).
+    pub galaxy: f64,
     pub brightness: f64,
 }
 
 impl Default for Sky {
     fn default() -> Self {
         Sky {
-            kind: SkyKind::Checker,
+            kind: SkyKind::Stars,
             squares: 24,
-            brightness: 0.12,
+            star_density: 0.5,
+            galaxy: 0.02,
+            brightness: 1.0,
         }
     }
 }
@@ -297,11 +307,43 @@ impl Default for Scene {
 pub const MAX_HOLES: usize = 8;
 
 /// Built-in presets: name, one-line description, TOML source.
-pub const PRESETS: &[(&str, &str, &str)] = &[(
-    "default",
-    "one hole, thin disk seen from just above its plane, checker sky",
-    include_str!("presets/default.toml"),
-)];
+pub const PRESETS: &[(&str, &str, &str)] = &[
+    (
+        "default",
+        "one hole, physical thin disk seen from just above its plane, stars",
+        include_str!("presets/default.toml"),
+    ),
+    (
+        "doppler",
+        "the thin disk from higher up: Doppler and gravitational shifts on",
+        include_str!("presets/doppler.toml"),
+    ),
+    (
+        "grid",
+        "no disk, a checker sky: lensing made plain",
+        include_str!("presets/grid.toml"),
+    ),
+    (
+        "binary",
+        "two holes, accelerations summed (an approximation), checker sky",
+        include_str!("presets/binary.toml"),
+    ),
+    (
+        "edge-on",
+        "the camera a hair above the disk's plane",
+        include_str!("presets/edge-on.toml"),
+    ),
+    (
+        "no-gravity",
+        "the default scene with straight rays",
+        include_str!("presets/no-gravity.toml"),
+    ),
+    (
+        "top-down",
+        "looking down the disk's axis",
+        include_str!("presets/top-down.toml"),
+    ),
+];
 
 /// Names of the built-in presets, for `--help`.
 pub fn preset_names() -> Vec<&'static str> {
@@ -498,6 +540,20 @@ impl Scene {
         }
 
         let s = &self.sky;
+        if !(s.star_density.is_finite() && (0.0..=1.0).contains(&s.star_density)) {
+            return err(
+                vec![Key("sky"), Key("star_density")],
+                s.star_density.to_string(),
+                "must be in [0, 1]",
+            );
+        }
+        if !(s.galaxy.is_finite() && s.galaxy >= 0.0) {
+            return err(
+                vec![Key("sky"), Key("galaxy")],
+                s.galaxy.to_string(),
+                "must be a finite number >= 0",
+            );
+        }
         if s.squares == 0 {
             return err(
                 vec![Key("sky"), Key("squares")],

@@ -1,0 +1,95 @@
+// Skies for escaped rays. Requires params.glsl, and blackbody(t) for star colours.
+#ifndef SKY_GLSL
+#define SKY_GLSL
+
+// PCG-style 3 -> 3 integer hash (Jarzynski & Olano, "Hash Functions for GPU
+// Rendering", JCGT 2020), as floats in [0, 1).
+vec3 hash33(uvec3 v) {
+    v = v * 1664525u + 1013904223u;
+    v.x += v.y * v.z; v.y += v.z * v.x; v.z += v.x * v.y;
+    v ^= v >> 16u;
+    v.x += v.y * v.z; v.y += v.z * v.x; v.z += v.x * v.y;
+    return vec3(v) * (1.0 / 4294967296.0);
+}
+
+// The checker on the celestial sphere (the first seed's look): squares in
+// longitude and latitude, so lensing shows as bent lines.
+vec3 sky_checker(vec3 d) {
+    float n = P.sky.y;
+    float phi = atan(d.z, d.x);
+    float theta = acos(clamp(d.y, -1.0, 1.0));
+    float u = (phi / (2.0 * 3.14159265) + 0.5) * n;
+    float w = theta / 3.14159265 * (0.5 * n);
+    bool odd = ((int(floor(u)) + int(floor(w))) & 1) == 1;
+    vec3 c = odd ? vec3(0.85, 0.85, 0.9) : vec3(0.1, 0.14, 0.28);
+    return c * P.sky.z;
+}
+
+// A deterministic star field: the sphere is cut into cells on the faces of a
+// cube (CELLS x CELLS per face); a cell holds at most one star at a hashed
+// place, with a hashed brightness (a steep power law: few bright stars, many
+// faint) and blackbody temperature. A star is drawn as a Gaussian whose width
+// is the pixel's angular size (or more), with its total flux fixed, so stars
+// stay one or two pixels wide and keep their brightness at any resolution and
+// do not shimmer as the camera moves. The 3x3 neighbouring cells are visited
+// so stars near a cell edge are not cut.
+const float CELLS = 160.0;
+
+vec3 cube_face(vec3 d, out uint face, out vec2 uv) {
+    vec3 a = abs(d);
+    if (a.x >= a.y && a.x >= a.z) { face = d.x > 0.0 ? 0u : 1u; uv = d.zy / a.x; }
+    else if (a.y >= a.z)          { face = d.y > 0.0 ? 2u : 3u; uv = d.xz / a.y; }
+    else                          { face = d.z > 0.0 ? 4u : 5u; uv = d.xy / a.z; }
+    return a;
+}
+
+vec3 face_dir(uint face, vec2 uv) {
+    vec3 d;
+    if (face < 2u)      d = vec3(face == 0u ? 1.0 : -1.0, uv.y, uv.x);
+    else if (face < 4u) d = vec3(uv.x, face == 2u ? 1.0 : -1.0, uv.y);
+    else                d = vec3(uv.x, uv.y, face == 4u ? 1.0 : -1.0);
+    return normalize(d);
+}
+
+vec3 sky_stars(vec3 d, float pixel_angle) {
+    uint face;
+    vec2 uv;
+    cube_face(d, face, uv);
+    vec2 cell = floor((uv * 0.5 + 0.5) * CELLS);
+    float sigma = max(0.6 * pixel_angle, 2e-5);
+    vec3 sum = vec3(0.0);
+    for (int j = -1; j <= 1; ++j) {
+        for (int i = -1; i <= 1; ++i) {
+            vec2 c = cell + vec2(i, j);
+            if (any(lessThan(c, vec2(0.0))) || any(greaterThanEqual(c, vec2(CELLS)))) continue;
+            vec3 h = hash33(uvec3(uvec2(c), face * 7919u + 17u));
+            if (h.z > P.sky.y) continue;  // star density: the chance a cell has a star
+            vec2 suv = ((c + 0.1 + 0.8 * h.xy) / CELLS) * 2.0 - 1.0;
+            vec3 s = face_dir(face, suv);
+            vec3 h2 = hash33(uvec3(uvec2(c) + 4099u, face + 101u));
+            // Brightness: power law, a few bright stars among many faint ones.
+            float flux = 5e-8 * min(pow(h2.x, -1.5), 1000.0);
+            float temp = mix(2800.0, 14000.0, h2.y * h2.y);
+            float ang = acos(clamp(dot(d, s), -1.0, 1.0));
+            float w = exp(-0.5 * ang * ang / (sigma * sigma)) / (6.2831853 * sigma * sigma);
+            sum += blackbody(temp) * (flux * w);
+        }
+    }
+    // A faint galaxy band along a great circle tilted 60 degrees to the disk,
+    // with a little large-scale texture.
+    vec3 gal_n = normalize(vec3(0.0, 0.5, 0.866));
+    float lat = dot(d, gal_n);
+    vec3 h3 = hash33(uvec3(uvec2(floor((uv * 0.5 + 0.5) * 12.0)), face));
+    float band = exp(-lat * lat / (2.0 * 0.12 * 0.12)) * (0.75 + 0.5 * h3.x);
+    vec3 galaxy = vec3(0.9, 0.85, 0.75) * (P.sky.w * band);
+    return (sum + galaxy) * P.sky.z;
+}
+
+vec3 sky_color(vec3 d, float pixel_angle) {
+    int kind = int(P.sky.x);
+    if (kind == SKY_CHECKER) return sky_checker(d);
+    if (kind == SKY_STARS) return sky_stars(d, pixel_angle);
+    return vec3(0.0);
+}
+
+#endif
