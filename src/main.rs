@@ -48,6 +48,11 @@ enum Command {
         /// R,G,B,A = direction, or radius/azimuth/redshift, and the outcome).
         #[arg(long, value_enum, default_value_t = Aov::Beauty)]
         aov: Aov,
+        /// Render frames A to B-1 of the scene's [animation] as a numbered
+        /// sequence: --out out.png writes out_0000.png, out_0001.png, ...
+        /// Frame i is at time i / fps, so ranges can be split across machines.
+        #[arg(long, value_name = "A..B", value_parser = parse_range)]
+        frames: Option<std::ops::Range<u64>>,
     },
     /// Plot photon paths in the hole's equatorial plane (SVG), with the horizon,
     /// the photon sphere and the ISCO.
@@ -80,6 +85,51 @@ enum Command {
     },
 }
 
+fn parse_range(s: &str) -> Result<std::ops::Range<u64>, String> {
+    let (a, b) = s
+        .split_once("..")
+        .ok_or_else(|| format!("`{s}` is not a range A..B (for example 0..120)"))?;
+    let a: u64 = a
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{a}` in `{s}` is not a frame number"))?;
+    let b: u64 = b
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{b}` in `{s}` is not a frame number"))?;
+    if b <= a {
+        return Err(format!(
+            "`{s}` is empty: the end is exclusive and must be greater than the start"
+        ));
+    }
+    Ok(a..b)
+}
+
+/// `out.png` and frame 7 -> `out_0007.png`.
+fn numbered(out: &std::path::Path, index: u64) -> PathBuf {
+    let stem = out
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let ext = out
+        .extension()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    out.with_file_name(format!("{stem}_{index:04}.{ext}"))
+}
+
+/// The output's folder must exist before any rendering starts.
+fn check_out_dir(out: &std::path::Path) -> Result<(), Error> {
+    match out.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() && !dir.is_dir() => Err(Error::Usage(format!(
+            "--out {}: the folder {} does not exist",
+            out.display(),
+            dir.display()
+        ))),
+        _ => Ok(()),
+    }
+}
+
 fn presets_help() -> String {
     let lines: Vec<String> = blackhole::scene::PRESETS
         .iter()
@@ -110,9 +160,11 @@ fn run(cli: Cli) -> Result<ExitCode, Error> {
             height,
             out,
             aov,
+            frames,
         } => {
             // Check everything the user gave before touching the GPU.
             let format = FileFormat::from_path(&out)?;
+            check_out_dir(&out)?;
             if aov == Aov::Geodesic && format != FileFormat::Exr {
                 return Err(Error::Usage(format!(
                     "--aov geodesic writes float data: give an .exr --out, not {}",
@@ -135,6 +187,33 @@ fn run(cli: Cli) -> Result<ExitCode, Error> {
             };
             let mut renderer = Renderer::new(RendererOptions::default())?;
             let start = Instant::now();
+            if let Some(range) = frames {
+                let bar = indicatif::ProgressBar::new(range.end - range.start);
+                bar.set_style(
+                    indicatif::ProgressStyle::with_template(
+                        "{elapsed_precise} [{bar:40}] {pos}/{len} frames, ETA {eta} {msg}",
+                    )
+                    .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+                    .progress_chars("=> "),
+                );
+                for i in range.clone() {
+                    let path = numbered(&out, i);
+                    let frame = renderer.render(&scene.at_frame(i), width, height, kind)?;
+                    output::write_frame(&frame, &path, format)?;
+                    bar.set_message(format!("{}", path.display()));
+                    bar.inc(1);
+                }
+                bar.finish_and_clear();
+                println!(
+                    "wrote {} frames {}..{} ({width}x{height}) in {:.1} s on {}",
+                    range.end - range.start,
+                    numbered(&out, range.start).display(),
+                    numbered(&out, range.end - 1).display(),
+                    start.elapsed().as_secs_f64(),
+                    renderer.device_name()
+                );
+                return Ok(validation_verdict(&renderer));
+            }
             let frame = renderer.render(&scene, width, height, kind)?;
             output::write_frame(&frame, &out, format)?;
             log::info!("GPU: {}", frame.timings);

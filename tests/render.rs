@@ -303,3 +303,71 @@ fn help_lists_every_preset() {
         assert!(stdout.contains(name), "--help lacks {name}");
     }
 }
+
+#[test]
+fn a_sequence_split_into_ranges_renders_the_same_frames() {
+    let dir = scratch();
+    let scene = path_in(&dir, "orbit.toml");
+    std::fs::write(
+        &scene,
+        "[animation]\ncamera = \"orbit\"\norbit_speed_deg = 30.0\nfps = 4.0\n",
+    )
+    .unwrap();
+    let render = |sub: &str, range: &str| {
+        let folder = dir.path().join(sub);
+        std::fs::create_dir(&folder).unwrap();
+        let mut c = blackhole();
+        c.args([
+            "render", "--width", "48", "--height", "27", "--frames", range, "--scene",
+        ])
+        .arg(&scene)
+        .arg("--out")
+        .arg(folder.join("f.png"));
+        let (code, stdout, stderr) = run(c);
+        assert_clean(code, &stdout, &stderr);
+        folder
+    };
+    let whole = render("whole", "0..3");
+    let part = render("part", "1..3");
+    let names = |d: &std::path::Path| {
+        let mut v: Vec<String> = std::fs::read_dir(d)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        v.sort();
+        v
+    };
+    assert_eq!(names(&whole), ["f_0000.png", "f_0001.png", "f_0002.png"]);
+    assert_eq!(names(&part), ["f_0001.png", "f_0002.png"]);
+    for f in ["f_0001.png", "f_0002.png"] {
+        assert_eq!(
+            std::fs::read(whole.join(f)).unwrap(),
+            std::fs::read(part.join(f)).unwrap(),
+            "{f}"
+        );
+    }
+    // The camera moves: consecutive frames differ.
+    assert_ne!(
+        std::fs::read(whole.join("f_0000.png")).unwrap(),
+        std::fs::read(whole.join("f_0001.png")).unwrap()
+    );
+}
+
+#[test]
+fn bad_frame_ranges_and_missing_folders_are_rejected() {
+    for range in ["5..2", "3..3", "x..4", "7"] {
+        let mut c = blackhole();
+        c.args(["render", "--frames", range, "--out", "never.png"]);
+        let (code, _, stderr) = run(c);
+        assert_eq!(code, 2, "{range}: {stderr}");
+        assert!(stderr.contains(range), "{range}: {stderr}");
+    }
+    let mut c = blackhole();
+    c.args(["render", "--out", "/nonexistent-folder/x.png"]);
+    let (code, _, stderr) = run(c);
+    assert_eq!(code, 2);
+    assert!(
+        stderr.contains("/nonexistent-folder") && stderr.contains("does not exist"),
+        "{stderr}"
+    );
+}

@@ -1,7 +1,10 @@
 //! Scenes: the TOML schema (DESIGN.md section 3), validation with messages that
 //! name the key, the value and the line, and the built-in presets.
 
+pub mod animation;
 mod locate;
+
+pub use animation::{Animation, CameraPath, Keyframe};
 
 use std::path::Path;
 
@@ -286,6 +289,7 @@ pub struct Scene {
     pub physics: Physics,
     pub bloom: Bloom,
     pub post: Post,
+    pub animation: Animation,
 }
 
 impl Default for Scene {
@@ -299,6 +303,7 @@ impl Default for Scene {
             physics: Physics::default(),
             bloom: Bloom::default(),
             post: Post::default(),
+            animation: Animation::default(),
         }
     }
 }
@@ -351,6 +356,15 @@ pub fn preset_names() -> Vec<&'static str> {
 }
 
 impl Scene {
+    /// The scene at frame `index` of its animation (the camera moved).
+    pub fn at_frame(&self, index: u64) -> Scene {
+        let t = self.animation.time_of(index);
+        Scene {
+            camera: self.animation.camera_at(&self.camera, t),
+            ..self.clone()
+        }
+    }
+
     /// Parses and validates TOML; `origin` names the file in messages.
     pub fn from_toml(src: &str, origin: &str) -> Result<Self> {
         let scene: Scene = toml::from_str(src).map_err(|e| {
@@ -618,6 +632,50 @@ impl Scene {
                 b.radius.to_string(),
                 "must be a finite number > 0",
             );
+        }
+        let a = &self.animation;
+        if !(a.fps.is_finite() && a.fps > 0.0) {
+            return err(
+                vec![Key("animation"), Key("fps")],
+                a.fps.to_string(),
+                "must be a finite number > 0",
+            );
+        }
+        for (name, v) in [
+            ("orbit_radius", a.orbit_radius),
+            ("orbit_speed_deg", a.orbit_speed_deg),
+            ("inclination_deg", a.inclination_deg),
+        ] {
+            if !v.is_finite() || (name == "orbit_radius" && v < 0.0) {
+                return err(
+                    vec![Key("animation"), Key(name)],
+                    v.to_string(),
+                    "must be a finite number (radius >= 0)",
+                );
+            }
+        }
+        if a.inclination_deg.abs() >= 90.0 {
+            return err(
+                vec![Key("animation"), Key("inclination_deg")],
+                a.inclination_deg.to_string(),
+                "must be between -90 and 90 (the camera's up is +y)",
+            );
+        }
+        if a.camera == CameraPath::Keyframes && a.keyframes.is_empty() {
+            return err(
+                vec![Key("animation"), Key("camera")],
+                "\"keyframes\"".into(),
+                "needs at least one [[animation.keyframe]]",
+            );
+        }
+        for (i, k) in a.keyframes.iter().enumerate() {
+            if !k.time.is_finite() || (i > 0 && k.time <= a.keyframes[i - 1].time) {
+                return err(
+                    vec![Key("animation"), Key("keyframe"), Idx(i), Key("time")],
+                    k.time.to_string(),
+                    "keyframe times must be finite and increasing",
+                );
+            }
         }
         if !self.post.exposure_ev.is_finite() {
             return err(
