@@ -212,7 +212,7 @@ fn run(cli: Cli) -> Result<ExitCode, Error> {
                     start.elapsed().as_secs_f64(),
                     renderer.device_name()
                 );
-                return Ok(validation_verdict(&renderer));
+                return finish(renderer);
             }
             let frame = renderer.render(&scene, width, height, kind)?;
             output::write_frame(&frame, &out, format)?;
@@ -223,7 +223,7 @@ fn run(cli: Cli) -> Result<ExitCode, Error> {
                 start.elapsed().as_secs_f64() * 1e3,
                 renderer.device_name()
             );
-            Ok(validation_verdict(&renderer))
+            finish(renderer)
         }
         Command::Trace { scene, out } => {
             let scene = match scene {
@@ -256,9 +256,16 @@ fn run(cli: Cli) -> Result<ExitCode, Error> {
                     })
                 })?;
             }
-            Ok(validation_verdict(&renderer))
+            finish(renderer)
         }
     }
+}
+
+/// Shuts the renderer down (checking for leaks) and gives the exit code.
+fn finish(renderer: Renderer) -> Result<ExitCode, Error> {
+    let code = validation_verdict(&renderer);
+    renderer.shutdown()?;
+    Ok(code)
 }
 
 /// With validation on, any error or warning fails the run (exit 3).

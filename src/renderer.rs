@@ -125,6 +125,21 @@ impl Renderer {
         })
     }
 
+    /// Destroys everything in the documented order and checks that nothing
+    /// outlived it: every Vulkan object holds the device, so a device still
+    /// referenced afterwards means a leaked object (and its memory).
+    pub fn shutdown(self) -> Result<()> {
+        let device = Arc::downgrade(&self.gpu);
+        drop(self);
+        match device.upgrade() {
+            None => Ok(()),
+            Some(gpu) => Err(Error::Other(format!(
+                "{} Vulkan objects still hold the device after shutdown (leaked)",
+                Arc::strong_count(&gpu) - 1
+            ))),
+        }
+    }
+
     /// The device in use.
     pub fn device_name(&self) -> &str {
         &self.gpu.info.name

@@ -43,6 +43,7 @@ fn every_level_is_its_own_timed_pass() {
         ]
     );
     assert_eq!(r.validation_counts(), (0, 0));
+    r.shutdown().expect("nothing outlives the renderer");
 }
 
 #[test]
@@ -79,6 +80,7 @@ fn strength_zero_culls_the_chain_and_a_threshold_nothing_reaches_adds_nothing() 
         rgba8(r.render(&scene, 96, 54, OutputKind::Ldr).unwrap())
     );
     assert_eq!(r.validation_counts(), (0, 0));
+    r.shutdown().expect("nothing outlives the renderer");
 }
 
 #[test]
@@ -147,4 +149,5 @@ fn a_bright_spot_spreads_symmetrically_and_falls_off() {
         "without bloom nothing is there"
     );
     assert_eq!(r.validation_counts(), (0, 0));
+    r.shutdown().expect("nothing outlives the renderer");
 }

@@ -47,6 +47,7 @@ fn frames_are_timed_per_pass_and_validation_stays_silent() {
         "composite culled for HDR output"
     );
     assert_eq!(r.validation_counts(), (0, 0));
+    r.shutdown().expect("nothing outlives the renderer");
 }
 
 #[test]
@@ -56,4 +57,5 @@ fn zero_sized_or_huge_images_are_usage_errors() {
     assert!(r.render(&scene, 0, 10, OutputKind::Ldr).is_err());
     assert!(r.render(&scene, 1 << 20, 10, OutputKind::Ldr).is_err());
     assert_eq!(r.validation_counts(), (0, 0));
+    r.shutdown().expect("nothing outlives the renderer");
 }

@@ -38,6 +38,10 @@ pub fn assert_clean(code: i32, stdout: &str, stderr: &str) {
         stderr.contains("validation: 0 errors, 0 warnings"),
         "validation must be on and clean:\n{stderr}"
     );
+    assert!(
+        !stderr.contains("still alive at shutdown"),
+        "GPU memory leaked:\n{stderr}"
+    );
 }
 
 /// A fresh scratch directory for one test.
