@@ -33,6 +33,28 @@ vec3 blackbody(float t) {
 
 #include "sky.glsl"
 
+// Light of the thin disk at radius r whose light reaches us shifted by g_full
+// (DESIGN.md section 2): Novikov-Thorne temperature T(r), observed temperature
+// g T coloured by the blackbody table, observed bolometric intensity g^4 times
+// the emitted T^4. The switches pick which parts of g apply: the gravitational
+// part sqrt(1 - rs/r), the kinematic (Doppler) rest, both, or neither.
+vec3 disk_color(float r, float g_full) {
+    float rs = P.holes[0].w;
+    float r_in = P.disk.x;
+    float f = max((1.0 - sqrt(r_in / r)) / (r * r * r), 0.0);
+    float t_rel = sqrt(sqrt(f / P.disk_temp.y));   // T / T_peak
+    float g_grav = sqrt(max(1.0 - rs / r, 1e-6));
+    bool doppler = P.disk_temp.z > 0.5, redshift = P.disk_temp.w > 0.5;
+    float g = doppler ? (redshift ? g_full : g_full / g_grav) : (redshift ? g_grav : 1.0);
+    float t_obs = g * t_rel * P.disk_temp.x;
+    vec3 c = blackbody(t_obs);
+    float gt = g * t_rel;
+    return c * (P.disk.z * gt * gt * gt * gt);
+}
+
+#include "noise.glsl"
+#include "volume.glsl"
+
 #define OUT_ESCAPED 0
 #define OUT_CAPTURED 1
 #define OUT_DISK 2
@@ -45,7 +67,13 @@ struct Hit {
     vec3 pos;   // disk crossing point
     vec3 dir;   // final direction (escaped)
     float g;    // redshift at a disk hit
+    vec3 glow;  // light gathered from the volumetric disk on the way
+    float trans; // transmittance of that volume (1: clear)
 };
+
+bool volumetric() {
+    return int(P.disk_normal.w) == DISK_VOLUME;
+}
 
 // The bending a ray still gets beyond the escape radius, to first order in rs
 // (integrating the perpendicular acceleration 1.5 rs b^3 / r^5 along the
@@ -138,6 +166,8 @@ Hit trace_planar(vec3 x, vec3 d) {
     hit.pos = vec3(0.0);
     hit.dir = d;
     hit.g = 0.0;
+    hit.glow = vec3(0.0);
+    hit.trans = 1.0;
     vec3 c = P.holes[0].xyz;
     float rs = P.holes[0].w;
     vec3 rel = x - c;
@@ -168,8 +198,11 @@ Hit trace_planar(vec3 x, vec3 d) {
         }
     }
     float dphi = P.integ.w;
+    bool vol = volumetric();
+    // The photon's angular momentum about the disk axis (runs backwards: -nrm).
+    float lambda = -dot(nrm, N) / sqrt(max(inv_b2, 1e-30));
     // No disk crossing can come after this radius on the way out.
-    float tail_u = 1.0 / max(max(10.0 * rs, int(P.disk_normal.w) == DISK_THIN ? P.disk.y : 0.0), 1e-6);
+    float tail_u = 1.0 / max(max(10.0 * rs, int(P.disk_normal.w) != DISK_NONE ? P.disk.y : 0.0), 1e-6);
     float u_capture = 1.0 / rs;
     float phi = 0.0;
     uint budget = P.counts.w;
@@ -179,6 +212,15 @@ Hit trace_planar(vec3 x, vec3 d) {
         bool at_crossing = phi + h >= phi_next;
         if (at_crossing) h = phi_next - phi;
         vec2 sn2 = binet_rk4(s, h, rs);
+        if (vol && sn2.x > 0.0) {
+            vec3 pa = c + (cos(phi) * e1 + sin(phi) * e2) / s.x;
+            vec3 pb = c + (cos(phi + h) * e1 + sin(phi + h) * e2) / min(sn2.x, u_capture);
+            volume_segment(pa, pb, lambda, hit.glow, hit.trans);
+            if (hit.trans < 0.003) {
+                hit.outcome = OUT_CAPTURED;  // opaque: nothing behind shows
+                return hit;
+            }
+        }
         if (sn2.x <= 0.0) {
             float phi_inf = phi + h * s.x / (s.x - sn2.x);
             hit.outcome = OUT_ESCAPED;
@@ -214,7 +256,6 @@ Hit trace_planar(vec3 x, vec3 d) {
                 hit.outcome = OUT_DISK;
                 hit.pos = c + r * (cos(phi) * e1 + sin(phi) * e2);
                 // lambda = L/E about the disk axis; the photon runs backwards (-nrm).
-                float lambda = -dot(nrm, N) / sqrt(max(inv_b2, 1e-30));
                 float omega = sqrt(0.5 * rs / (r * r * r));
                 hit.g = sqrt(max(1.0 - 1.5 * rs / r, 0.0)) / (1.0 - omega * lambda);
                 return hit;
@@ -231,6 +272,9 @@ Hit trace(vec3 x, vec3 v) {
     hit.pos = vec3(0.0);
     hit.dir = v;
     hit.g = 0.0;
+    hit.glow = vec3(0.0);
+    hit.trans = 1.0;
+    bool vol = volumetric();
     float tol = P.integ.x;
     float r_esc = P.integ.y;
     bool gravity = P.integ.z > 0.5;
@@ -253,6 +297,19 @@ Hit trace(vec3 x, vec3 v) {
             xn = x + h * v; vn = v; an = vec3(0.0);
         }
 
+        if (vol) {
+            // lambda from the (one-hole) conserved quantities; approximate for several.
+            vec3 dd = x - c0;
+            vec3 hv = cross(dd, v);
+            float rr = length(dd);
+            float vinf = sqrt(max(dot(v, v) - (gravity ? P.holes[0].w * dot(hv, hv) / (rr * rr * rr) : 0.0), 1e-20));
+            float lambda = dot(cross(dd, -v), P.disk_normal.xyz) / vinf;
+            volume_segment(x, xn, lambda, hit.glow, hit.trans);
+            if (hit.trans < 0.003) {
+                hit.outcome = OUT_CAPTURED;
+                return hit;
+            }
+        }
         if (thin) {
             float d0 = plane_dist(x), d1 = plane_dist(xn);
             if ((d0 < 0.0) != (d1 < 0.0) || d1 == 0.0) {
@@ -293,25 +350,6 @@ Hit trace(vec3 x, vec3 v) {
     return hit;
 }
 
-// Light of the thin disk at radius r whose light reaches us shifted by g_full
-// (DESIGN.md section 2): Novikov-Thorne temperature T(r), observed temperature
-// g T coloured by the blackbody table, observed bolometric intensity g^4 times
-// the emitted T^4. The switches pick which parts of g apply: the gravitational
-// part sqrt(1 - rs/r), the kinematic (Doppler) rest, both, or neither.
-vec3 disk_color(float r, float g_full) {
-    float rs = P.holes[0].w;
-    float r_in = P.disk.x;
-    float f = max((1.0 - sqrt(r_in / r)) / (r * r * r), 0.0);
-    float t_rel = sqrt(sqrt(f / P.disk_temp.y));   // T / T_peak
-    float g_grav = sqrt(max(1.0 - rs / r, 1e-6));
-    bool doppler = P.disk_temp.z > 0.5, redshift = P.disk_temp.w > 0.5;
-    float g = doppler ? (redshift ? g_full : g_full / g_grav) : (redshift ? g_grav : 1.0);
-    float t_obs = g * t_rel * P.disk_temp.x;
-    vec3 c = blackbody(t_obs);
-    float gt = g * t_rel;
-    return c * (P.disk.z * gt * gt * gt * gt);
-}
-
 void main() {
     uvec2 px = gl_GlobalInvocationID.xy;
     uint w = P.counts.y, hgt = P.counts.z;
@@ -323,6 +361,7 @@ void main() {
     float sy = (1.0 - 2.0 * (float(px.y) + 0.5) / float(hgt)) * tan_half;
     vec3 dir = normalize(P.cam_fwd.xyz + sx * P.cam_right.xyz + sy * P.cam_up.xyz);
 
+    volume_jitter = hash33(uvec3(px, 7u)).x;
     Hit hit = ONE_HOLE ? trace_planar(P.cam_pos.xyz, dir) : trace(P.cam_pos.xyz, dir);
 #ifdef GEODESIC_AOV
     vec4 aov = vec4(0.0, 0.0, 0.0, float(hit.outcome));
@@ -339,6 +378,7 @@ void main() {
     vec3 color = vec3(0.0);
     if (hit.outcome == OUT_ESCAPED) color = sky_color(hit.dir, 2.0 * tan_half / float(hgt));
     else if (hit.outcome == OUT_DISK) color = disk_color(length(hit.pos - P.holes[0].xyz), hit.g);
+    color = hit.glow + hit.trans * color;
     imageStore(out_img, ivec2(px), vec4(color, 1.0));
 #endif
 }

@@ -57,6 +57,8 @@ fn raymarch_params_match_the_glsl_block() {
         offset_of!(RaymarchParams, disk_e1),
         offset_of!(RaymarchParams, disk_e2),
         offset_of!(RaymarchParams, disk_temp),
+        offset_of!(RaymarchParams, vol0),
+        offset_of!(RaymarchParams, vol1),
         offset_of!(RaymarchParams, sky),
         offset_of!(RaymarchParams, integ),
         offset_of!(RaymarchParams, counts),

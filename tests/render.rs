@@ -245,7 +245,7 @@ fn bad_aov_requests_are_rejected_before_rendering() {
     let (code, _, stderr) = run(c);
     assert_eq!(code, 2, "{stderr}");
     assert!(
-        stderr.contains("disk.kind") && stderr.contains("volumetric"),
+        stderr.contains("--aov geodesic") && stderr.contains("volumetric"),
         "{stderr}"
     );
     assert!(!exr.exists());

@@ -8,6 +8,7 @@
 // Disk kinds (disk_normal.w).
 #define DISK_NONE 0
 #define DISK_THIN 1
+#define DISK_VOLUME 2
 
 // Sky kinds (sky.x).
 #define SKY_BLACK 0
@@ -24,6 +25,8 @@ layout(std140, binding = 1) uniform RaymarchParams {
     vec4 disk_e1;      // xyz: in-plane basis vector (azimuth 0)
     vec4 disk_e2;      // xyz: e1 x normal (azimuth 90 degrees)
     vec4 disk_temp;    // x: peak temperature (K), y: NT profile at the peak, z: Doppler on, w: redshift on
+    vec4 vol0;         // volumetric disk: x: half height, y: vertical falloff, z: radial falloff, w: noise scale
+    vec4 vol1;         // x: noise octaves, y: rotation time (speed x time), z: lit (emission scale), w: 1 blackbody / 0 colour map
     vec4 sky;          // x: sky kind, y: checker squares or star density, z: brightness, w: galaxy band
     vec4 integ;        // x: tolerance, y: escape radius, z: gravity on (1/0), w: Binet far-field step (rad)
     uvec4 counts;      // x: hole count, y: width, z: height, w: step budget

@@ -12,7 +12,7 @@ use bytemuck::{Pod, Zeroable};
 
 use super::{Pipelines, groups};
 use crate::graph::{Graph, ImageHandle, Mips};
-use crate::scene::{DiskKind, MAX_HOLES, Scene, SkyKind};
+use crate::scene::{DiskKind, MAX_HOLES, Scene, SkyKind, VolumeColor};
 use crate::vk::{Access, Descriptor, bind_compute};
 
 /// HDR format written by the ray march.
@@ -43,6 +43,8 @@ pub struct RaymarchParams {
     pub disk_e1: [f32; 4],
     pub disk_e2: [f32; 4],
     pub disk_temp: [f32; 4],
+    pub vol0: [f32; 4],
+    pub vol1: [f32; 4],
     pub sky: [f32; 4],
     pub integ: [f32; 4],
     pub counts: [u32; 4],
@@ -77,9 +79,11 @@ impl RaymarchParams {
             *slot = v4(glam::DVec3::from(h.position), h.rs);
         }
         let disk_kind = match scene.disk.kind {
+            DiskKind::None => 0.0,
             DiskKind::Thin => 1.0,
-            DiskKind::Volumetric | DiskKind::None => 0.0,
+            DiskKind::Volumetric => 2.0,
         };
+        let d = &scene.disk;
         let (sky_kind, sky_param) = match scene.sky.kind {
             SkyKind::Black => (0.0, 0.0),
             SkyKind::Checker => (1.0, f64::from(scene.sky.squares)),
@@ -105,6 +109,22 @@ impl RaymarchParams {
                 nt_profile_at_peak(scene.disk.inner_radius) as f32,
                 f32::from(u8::from(scene.physics.doppler)),
                 f32::from(u8::from(scene.physics.gravitational_redshift)),
+            ],
+            vol0: [
+                d.height as f32,
+                d.density_v as f32,
+                d.density_h as f32,
+                d.noise_scale as f32,
+            ],
+            vol1: [
+                d.noise_octaves as f32,
+                (d.speed * scene.time) as f32,
+                d.lit as f32,
+                if d.color == VolumeColor::Blackbody {
+                    1.0
+                } else {
+                    0.0
+                },
             ],
             sky: [
                 sky_kind,

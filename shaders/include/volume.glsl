@@ -1,0 +1,93 @@
+// The volumetric disk (the second seed's look, reworked): a slab of glowing
+// gas around the first hole whose density falls with height and radius, cut
+// into filaments by several octaves of 3-D simplex noise that turn with the
+// Keplerian angular velocity of their radius (so the inner parts shear ahead
+// of the outer ones). Light is gathered along each integration step by
+// emission-absorption: colour += T * emission * ds, T *= exp(-sigma ds).
+// Requires params.glsl, noise.glsl and disk_color() / disk shift helpers.
+#ifndef VOLUME_GLSL
+#define VOLUME_GLSL
+
+// The film look's colour map: white-yellow inside to deep orange outside.
+vec3 volume_colormap(float r) {
+    float t = clamp((r - P.disk.x) / max(P.disk.y - P.disk.x, 1e-3), 0.0, 1.0);
+    vec3 inner = vec3(1.0, 0.85, 0.55);
+    vec3 outer = vec3(0.9, 0.35, 0.08);
+    return mix(inner, outer, sqrt(t)) * P.disk.z;
+}
+
+// Density at p (0 outside the slab).
+float volume_density(vec3 p, out float r) {
+    vec3 d = p - P.holes[0].xyz;
+    vec3 n = P.disk_normal.xyz;
+    float y = dot(d, n);
+    vec3 q = d - y * n;
+    r = length(q);
+    float H = P.vol0.x;
+    float r_in = P.disk.x, r_out = P.disk.y;
+    if (abs(y) >= H || r >= r_out || r <= 0.9 * r_in) return 0.0;
+    float dens = pow(1.0 - abs(y) / H, P.vol0.y)                 // vertical falloff
+               * pow(r_in / r, P.vol0.z)                          // radial falloff
+               * smoothstep(0.9 * r_in, 1.1 * r_in, r)
+               * (1.0 - smoothstep(0.75 * r_out, r_out, r));
+    if (dens < 1e-4) return 0.0;
+    // Turn the noise field with the local Keplerian angular velocity.
+    float rs = P.holes[0].w;
+    float angle = -sqrt(0.5 * rs / (r * r * r)) * P.vol1.y;
+    float ca = cos(angle), sa = sin(angle);
+    vec2 xz = vec2(dot(q, P.disk_e1.xyz), dot(q, P.disk_e2.xyz));
+    xz = vec2(ca * xz.x - sa * xz.y, sa * xz.x + ca * xz.y);
+    vec3 np = vec3(xz.x, y * 4.0, xz.y) * P.vol0.w;
+    // Fractal sum of octaves, then a contrast curve: filaments and gaps.
+    float noise = 0.0;
+    float amp = 1.0, freq = 1.0;
+    int octaves = int(P.vol1.x);
+    for (int i = 0; i < octaves; ++i) {
+        noise += amp * snoise(np * freq);
+        amp *= 0.5;
+        freq *= 2.0;
+    }
+    return dens * clamp(0.55 + 0.9 * noise, 0.0, 2.0) * 3.0;
+}
+
+// Sample spacing along a ray, in rs.
+const float VOLUME_DS = 0.2;
+
+// Per-pixel offset of the samples within their spacing, set by main(): a
+// fixed spacing would show as rings where rays run along the density
+// gradient; a hashed offset turns them into fine, stable grain.
+float volume_jitter = 0.5;
+
+// Gathers light along the chord from a to b. lambda: the photon's angular
+// momentum about the disk axis (for the Doppler shift of each sample).
+void volume_segment(vec3 a, vec3 b, float lambda, inout vec3 acc, inout float trans) {
+    vec3 n = P.disk_normal.xyz;
+    vec3 c = P.holes[0].xyz;
+    float ya = dot(a - c, n), yb = dot(b - c, n);
+    float H = P.vol0.x;
+    if ((ya > H && yb > H) || (ya < -H && yb < -H)) return;
+    float len = length(b - a);
+    int count = int(clamp(ceil(len / VOLUME_DS), 1.0, 16.0));
+    float ds = len / float(count);
+    float rs = P.holes[0].w;
+    bool blackbody_mode = P.vol1.w > 0.5;
+    for (int k = 0; k < count; ++k) {
+        vec3 p = mix(a, b, (float(k) + volume_jitter) / float(count));
+        float r;
+        float dens = volume_density(p, r);
+        if (dens <= 0.0) continue;
+        vec3 emit;
+        if (blackbody_mode) {
+            float omega = sqrt(0.5 * rs / (r * r * r));
+            float g = sqrt(max(1.0 - 1.5 * rs / r, 1e-4)) / (1.0 - omega * lambda);
+            emit = disk_color(max(r, 1.0001 * P.disk.x), g);
+        } else {
+            emit = volume_colormap(r);
+        }
+        float sigma = dens * 0.8;
+        acc += trans * emit * (dens * P.vol1.z * ds);
+        trans *= exp(-sigma * ds);
+    }
+}
+
+#endif
