@@ -228,6 +228,7 @@ impl Renderer {
             &lut,
             mode,
             scene.black_holes.len() == 1 && scene.physics.gravity,
+            scene.disk.kind == crate::scene::DiskKind::Volumetric,
         );
         let result = match kind {
             OutputKind::Ldr => {

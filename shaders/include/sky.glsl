@@ -31,8 +31,8 @@ vec3 sky_checker(vec3 d) {
 // faint) and blackbody temperature. A star is drawn as a Gaussian whose width
 // is the pixel's angular size (or more), with its total flux fixed, so stars
 // stay one or two pixels wide and keep their brightness at any resolution and
-// do not shimmer as the camera moves. The 3x3 neighbouring cells are visited
-// so stars near a cell edge are not cut.
+// do not shimmer as the camera moves. The cells around the direction are
+// visited so stars near a cell edge are not cut.
 const float CELLS = 160.0;
 
 vec3 cube_face(vec3 d, out uint face, out vec2 uv) {
@@ -55,12 +55,22 @@ vec3 sky_stars(vec3 d, float pixel_angle) {
     uint face;
     vec2 uv;
     cube_face(d, face, uv);
-    vec2 cell = floor((uv * 0.5 + 0.5) * CELLS);
+    vec2 g = (uv * 0.5 + 0.5) * CELLS;
+    vec2 cell = floor(g);
     float sigma = max(0.6 * pixel_angle, 2e-5);
+    float reach2 = 16.0 * sigma * sigma;
+    // A star sits at least 0.1 cell from its cell's edge and is drawn out to
+    // 4 sigma. When that reach is under 0.4 cell (pixels smaller than about a
+    // fifth of a cell, as at 720p and up), the 2x2 cells nearest to d hold
+    // every star that can touch it; for coarser pixels, the 3x3 around it.
+    // The choice is the same for the whole image, so it costs no divergence.
+    bool coarse = 4.0 * sigma > 0.4 * (2.0 / CELLS);
+    vec2 side = coarse ? vec2(1.0) : sign(g - cell - 0.5);
+    int lo = coarse ? -1 : 0;
     vec3 sum = vec3(0.0);
-    for (int j = -1; j <= 1; ++j) {
-        for (int i = -1; i <= 1; ++i) {
-            vec2 c = cell + vec2(i, j);
+    for (int j = lo; j <= 1; ++j) {
+        for (int i = lo; i <= 1; ++i) {
+            vec2 c = cell + vec2(i, j) * side;
             if (any(lessThan(c, vec2(0.0))) || any(greaterThanEqual(c, vec2(CELLS)))) continue;
             vec3 h = hash33(uvec3(uvec2(c), face * 7919u + 17u));
             if (h.z > P.sky.y) continue;  // star density: the chance a cell has a star
@@ -70,8 +80,11 @@ vec3 sky_stars(vec3 d, float pixel_angle) {
             // Brightness: power law, a few bright stars among many faint ones.
             float flux = 5e-8 * min(pow(h2.x, -1.5), 1000.0);
             float temp = mix(2800.0, 14000.0, h2.y * h2.y);
-            float ang = acos(clamp(dot(d, s), -1.0, 1.0));
-            float w = exp(-0.5 * ang * ang / (sigma * sigma)) / (6.2831853 * sigma * sigma);
+            // Chord length squared: the angle squared, for small angles.
+            vec3 delta = d - s;
+            float ang2 = dot(delta, delta);
+            if (ang2 > reach2) continue;
+            float w = exp(-0.5 * ang2 / (sigma * sigma)) / (6.2831853 * sigma * sigma);
             sum += blackbody(temp) * (flux * w);
         }
     }

@@ -9,6 +9,7 @@ pub mod raymarch;
 use std::sync::Arc;
 
 use crate::Result;
+use crate::shaders::{RAYMARCH, RAYMARCH_AOV};
 use crate::vk::{BindingKind, ComputePipeline, Gpu, Sampler};
 
 const RAYMARCH_BINDINGS: [BindingKind; 3] = [
@@ -19,9 +20,9 @@ const RAYMARCH_BINDINGS: [BindingKind; 3] = [
 
 /// Pipelines and samplers the passes use, created once per renderer.
 pub struct Pipelines {
-    /// Ray march: [general (any holes, gravity off), one hole (Binet)].
-    pub raymarch: [ComputePipeline; 2],
-    /// Ray march writing the geodesic AOV, same two kinds.
+    /// Ray march, by [general or one hole (Binet)][thin or no disk, or volumetric].
+    pub raymarch: [[ComputePipeline; 2]; 2],
+    /// Ray march writing the geodesic AOV, by [general or one hole].
     pub raymarch_aov: [ComputePipeline; 2],
     pub composite: ComputePipeline,
     pub bloom_down: ComputePipeline,
@@ -34,17 +35,18 @@ impl Pipelines {
     pub fn new(gpu: &Arc<Gpu>) -> Result<Self> {
         Ok(Pipelines {
             raymarch: [
-                raymarch_pipeline(gpu, "raymarch", crate::shaders::RAYMARCH, false)?,
-                raymarch_pipeline(gpu, "raymarch (one hole)", crate::shaders::RAYMARCH, true)?,
+                [
+                    raymarch_pipeline(gpu, "raymarch", RAYMARCH, false, false)?,
+                    raymarch_pipeline(gpu, "raymarch (volume)", RAYMARCH, false, true)?,
+                ],
+                [
+                    raymarch_pipeline(gpu, "raymarch (one hole)", RAYMARCH, true, false)?,
+                    raymarch_pipeline(gpu, "raymarch (one hole, volume)", RAYMARCH, true, true)?,
+                ],
             ],
             raymarch_aov: [
-                raymarch_pipeline(gpu, "raymarch aov", crate::shaders::RAYMARCH_AOV, false)?,
-                raymarch_pipeline(
-                    gpu,
-                    "raymarch aov (one hole)",
-                    crate::shaders::RAYMARCH_AOV,
-                    true,
-                )?,
+                raymarch_pipeline(gpu, "raymarch aov", RAYMARCH_AOV, false, false)?,
+                raymarch_pipeline(gpu, "raymarch aov (one hole)", RAYMARCH_AOV, true, false)?,
             ],
             composite: ComputePipeline::new(
                 gpu,
@@ -76,22 +78,18 @@ impl Pipelines {
     }
 }
 
-/// The ray march specialised for one hole (constant 0, `ONE_HOLE`): the
-/// general Cartesian integrator is then compiled out, not just skipped.
+/// The ray march specialised for one hole (constant 0, `ONE_HOLE`) and for a
+/// volumetric disk (constant 1, `VOLUME`): code a scene does not use is then
+/// compiled out, not just skipped.
 fn raymarch_pipeline(
     gpu: &Arc<Gpu>,
     name: &str,
     spirv: &[u8],
     one_hole: bool,
+    volume: bool,
 ) -> Result<ComputePipeline> {
-    ComputePipeline::with_constants(
-        gpu,
-        name,
-        spirv,
-        &RAYMARCH_BINDINGS,
-        0,
-        &[u32::from(one_hole)],
-    )
+    let constants = [u32::from(one_hole), u32::from(volume)];
+    ComputePipeline::with_constants(gpu, name, spirv, &RAYMARCH_BINDINGS, 0, &constants)
 }
 
 /// Workgroups to cover `n` items with groups of `size`.

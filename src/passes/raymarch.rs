@@ -157,12 +157,20 @@ pub fn add_raymarch<'a>(
     disk_lut: &ImageHandle,
     output: RaymarchOutput,
     one_hole: bool,
+    volume: bool,
 ) -> ImageHandle {
-    let (name, format, kinds) = match output {
-        RaymarchOutput::Beauty => ("hdr", HDR_FORMAT, &pipelines.raymarch),
-        RaymarchOutput::Geodesic => ("geodesic aov", AOV_FORMAT, &pipelines.raymarch_aov),
+    let (name, format, pipeline) = match output {
+        RaymarchOutput::Beauty => (
+            "hdr",
+            HDR_FORMAT,
+            &pipelines.raymarch[usize::from(one_hole)][usize::from(volume)],
+        ),
+        RaymarchOutput::Geodesic => (
+            "geodesic aov",
+            AOV_FORMAT,
+            &pipelines.raymarch_aov[usize::from(one_hole)],
+        ),
     };
-    let pipeline = &kinds[usize::from(one_hole)];
     let (width, height) = graph.output_size();
     let mut hdr = graph.create_relative(name, format, 1, 1);
     let (out, lut) = (hdr.clone(), disk_lut.clone());
