@@ -34,6 +34,10 @@ vec3 blackbody(float t) {
     return textureLod(disk_lut, vec2(clamp(u, 0.0, 1.0), 0.5), 0.0).rgb;
 }
 
+// The image sky's panorama with mips (or the colour table, unused, when the
+// sky is not an image).
+layout(binding = 3) uniform sampler2D sky_tex;
+
 #include "sky.glsl"
 
 // Light of the thin disk at radius r whose light reaches us shifted by g_full

@@ -22,6 +22,7 @@ pub mod profile;
 pub mod renderer;
 pub mod scene;
 pub mod shaders;
+pub mod sky;
 pub mod trace_plot;
 pub mod vk;
 

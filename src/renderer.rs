@@ -88,6 +88,8 @@ const MAX_TIMED_PASSES: u32 = 64;
 pub struct Renderer {
     transients: TransientPool,
     disk_lut: Image,
+    /// The image sky in use, with the files it came from.
+    sky: Option<(Vec<std::path::PathBuf>, Image)>,
     readback: Option<Buffer>,
     params: Buffer,
     timestamps: Option<TimestampPool>,
@@ -116,6 +118,7 @@ impl Renderer {
         Ok(Renderer {
             transients,
             disk_lut,
+            sky: None,
             readback: None,
             params,
             timestamps,
@@ -170,7 +173,11 @@ impl Renderer {
                 self.gpu.info.name
             )));
         }
-        let params = raymarch::RaymarchParams::new(scene, width, height);
+        self.ensure_sky(scene)?;
+        let mut params = raymarch::RaymarchParams::new(scene, width, height);
+        if let Some((_, sky)) = &self.sky {
+            params.sky[1] = sky.desc.width as f32;
+        }
         self.params
             .mapped_mut()?
             .copy_from_slice(bytemuck::bytes_of(&params));
@@ -221,11 +228,22 @@ impl Renderer {
             Access::ComputeSampledRead,
             Some(Access::ComputeSampledRead),
         );
+        let sky = match &self.sky {
+            Some((_, image)) => g.import_image(
+                "sky",
+                image.desc,
+                image.binding(),
+                Access::ComputeSampledRead,
+                Some(Access::ComputeSampledRead),
+            ),
+            None => lut.clone(),
+        };
         let hdr = passes::raymarch::add_raymarch(
             &mut g,
             pipelines,
             self.params.buffer,
             &lut,
+            &sky,
             mode,
             scene.black_holes.len() == 1 && scene.physics.gravity,
             scene.disk.kind == crate::scene::DiskKind::Volumetric,
@@ -340,7 +358,7 @@ impl Renderer {
             Some(Access::HostRead),
         );
         let mut input = g.create_relative("hdr input", vk::Format::R32G32B32A32_SFLOAT, 1, 1);
-        copy::add_upload(&mut g, &src, &mut input);
+        copy::add_upload(&mut g, &src, &mut input, 16);
         let blur = passes::bloom::add_bloom(&mut g, pipelines, &input, bloom);
         let ldr = composite::add_composite(&mut g, pipelines, &input, blur.as_ref(), bloom, post);
         copy::add_copy_to_buffer(&mut g, &ldr, &mut out_buf);
@@ -363,6 +381,42 @@ impl Renderer {
             pixels,
             timings,
         })
+    }
+
+    /// Loads and uploads the scene's image sky if it differs from the one held.
+    fn ensure_sky(&mut self, scene: &Scene) -> Result<()> {
+        use crate::scene::SkyKind;
+        let files = scene.sky.files(&scene.base_dir);
+        if !matches!(scene.sky.kind, SkyKind::Image | SkyKind::Cubemap) {
+            return Ok(());
+        }
+        if self.sky.as_ref().is_some_and(|(held, _)| *held == files) {
+            return Ok(());
+        }
+        let texture = match scene.sky.kind {
+            SkyKind::Cubemap => crate::sky::load_cubemap(&files)?,
+            _ => crate::sky::load_equirect(
+                files
+                    .first()
+                    .ok_or_else(|| Error::Scene("sky.kind = \"image\" needs sky.image".into()))?,
+            )?,
+        };
+        let max = self.gpu_max_dimension();
+        if texture.width > max || texture.height > max {
+            return Err(Error::Scene(format!(
+                "sky image {}x{} is larger than this device allows ({max} per side)",
+                texture.width, texture.height
+            )));
+        }
+        self.sky = None;
+        let image = upload_sky(
+            &self.gpu,
+            &mut self.commands,
+            &mut self.transients,
+            &texture,
+        )?;
+        self.sky = Some((files, image));
+        Ok(())
     }
 
     fn read_timings(&self, names: &[String]) -> Result<FrameTimings> {
@@ -442,7 +496,57 @@ fn upload_disk_lut(
         Access::Nothing,
         Some(Access::ComputeSampledRead),
     );
-    copy::add_upload(&mut g, &src, &mut dst);
+    copy::add_upload(&mut g, &src, &mut dst, 16);
+    let compiled = g.compile()?;
+    let cmd = commands.begin()?;
+    graph::execute::execute(g, &compiled, gpu, cmd, transients, None)?;
+    commands.submit_and_wait()?;
+    Ok(image)
+}
+
+/// Uploads a sky panorama with its mips as RGBA16F through a one-pass graph.
+fn upload_sky(
+    gpu: &Arc<Gpu>,
+    commands: &mut CommandContext,
+    transients: &mut TransientPool,
+    texture: &crate::sky::SkyTexture,
+) -> Result<Image> {
+    let desc = ImageDesc::new_2d(
+        vk::Format::R16G16B16A16_SFLOAT,
+        texture.width,
+        texture.height,
+    )
+    .with_mips(texture.levels.len() as u32);
+    let halves: Vec<half::f16> = texture.levels[..desc.mip_levels as usize]
+        .iter()
+        .flatten()
+        .flat_map(|t| t.map(half::f16::from_f32))
+        .collect();
+    let bytes: &[u8] = bytemuck::cast_slice(&halves);
+    let image = Image::new(
+        gpu,
+        "sky",
+        desc,
+        vk::ImageUsageFlags::SAMPLED | vk::ImageUsageFlags::TRANSFER_DST,
+    )?;
+    let mut staging = Buffer::new(
+        gpu,
+        "sky staging",
+        bytes.len() as u64,
+        vk::BufferUsageFlags::TRANSFER_SRC,
+        MemoryLocation::CpuToGpu,
+    )?;
+    staging.mapped_mut()?.copy_from_slice(bytes);
+    let mut g = Graph::new(desc.width, desc.height);
+    let src = g.import_buffer("sky staging", staging.binding(), Access::HostWrite, None);
+    let mut dst = g.import_image(
+        "sky",
+        desc,
+        image.binding(),
+        Access::Nothing,
+        Some(Access::ComputeSampledRead),
+    );
+    copy::add_upload(&mut g, &src, &mut dst, 8);
     let compiled = g.compile()?;
     let cmd = commands.begin()?;
     graph::execute::execute(g, &compiled, gpu, cmd, transients, None)?;

@@ -14,6 +14,7 @@
 #define SKY_BLACK 0
 #define SKY_CHECKER 1
 #define SKY_STARS 2
+#define SKY_IMAGE 3
 
 layout(std140, binding = 1) uniform RaymarchParams {
     vec4 cam_pos;      // xyz: camera position; w: tan(vfov / 2)

@@ -98,8 +98,20 @@ vec3 sky_stars(vec3 d, float pixel_angle) {
     return (sum + galaxy) * P.sky.z;
 }
 
+// An equirectangular panorama (src/sky.rs for the convention), sampled with
+// the mip level of the pixel's footprint: its angle over the angle of one
+// panorama texel at the equator (lensing's magnification is not included).
+vec3 sky_image(vec3 d, float pixel_angle) {
+    float u = 0.5 + atan(d.z, d.x) * (1.0 / 6.2831853);
+    float v = acos(clamp(d.y, -1.0, 1.0)) * (1.0 / 3.14159265);
+    float texel = 6.2831853 / max(P.sky.y, 1.0);
+    float lod = max(log2(max(pixel_angle / texel, 1e-6)), 0.0);
+    return textureLod(sky_tex, vec2(u, v), lod).rgb * P.sky.z;
+}
+
 vec3 sky_color(vec3 d, float pixel_angle) {
     int kind = int(P.sky.x);
+    if (kind == SKY_IMAGE) return sky_image(d, pixel_angle);
     if (kind == SKY_CHECKER) return sky_checker(d);
     if (kind == SKY_STARS) return sky_stars(d, pixel_angle);
     return vec3(0.0);

@@ -45,41 +45,61 @@ pub fn add_copy_to_buffer(graph: &mut Graph<'_>, image: &ImageHandle, buffer: &m
         });
 }
 
-/// Adds a transfer pass that copies `buffer` (tightly packed texels) into mip 0
-/// of `image`.
-pub fn add_upload(graph: &mut Graph<'_>, buffer: &BufferHandle, image: &mut ImageHandle) {
+/// Adds a transfer pass that copies `buffer` into every mip level of `image`:
+/// the levels tightly packed one after the other, level 0 first, with
+/// `texel_bytes` per texel.
+pub fn add_upload(
+    graph: &mut Graph<'_>,
+    buffer: &BufferHandle,
+    image: &mut ImageHandle,
+    texel_bytes: u64,
+) {
     let (src, dst) = (buffer.clone(), image.clone());
     graph
         .add_pass("upload")
         .read_buffer(buffer, Access::TransferRead)
-        .write(image, Access::TransferWrite, Mips::one(0))
+        .write(image, Access::TransferWrite, Mips::ALL)
         .record(move |ctx| {
-            let region = vk::BufferImageCopy {
-                buffer_offset: 0,
-                buffer_row_length: 0,
-                buffer_image_height: 0,
-                image_subresource: vk::ImageSubresourceLayers {
-                    aspect_mask: vk::ImageAspectFlags::COLOR,
-                    mip_level: 0,
-                    base_array_layer: 0,
-                    layer_count: 1,
-                },
-                image_offset: vk::Offset3D::default(),
-                image_extent: vk::Extent3D {
-                    width: dst.desc.width,
-                    height: dst.desc.height,
-                    depth: 1,
-                },
-            };
-            // SAFETY: the graph put the image in TRANSFER_DST_OPTIMAL after the
-            // host's writes to the buffer; the region fits both.
+            let mut offset = 0u64;
+            let regions: Vec<vk::BufferImageCopy> = (0..dst.desc.mip_levels)
+                .map(|level| {
+                    let (w, h) = dst.desc.mip_extent(level);
+                    let region = vk::BufferImageCopy {
+                        buffer_offset: offset,
+                        buffer_row_length: 0,
+                        buffer_image_height: 0,
+                        image_subresource: vk::ImageSubresourceLayers {
+                            aspect_mask: vk::ImageAspectFlags::COLOR,
+                            mip_level: level,
+                            base_array_layer: 0,
+                            layer_count: 1,
+                        },
+                        image_offset: vk::Offset3D::default(),
+                        image_extent: vk::Extent3D {
+                            width: w,
+                            height: h,
+                            depth: 1,
+                        },
+                    };
+                    offset += u64::from(w) * u64::from(h) * texel_bytes;
+                    region
+                })
+                .collect();
+            if offset > src.size {
+                return Err(crate::Error::Other(format!(
+                    "upload needs {offset} bytes, the staging buffer has {}",
+                    src.size
+                )));
+            }
+            // SAFETY: the graph put every level in TRANSFER_DST_OPTIMAL after
+            // the host's writes to the buffer; the regions fit both (checked).
             unsafe {
                 ctx.gpu.device.cmd_copy_buffer_to_image(
                     ctx.cmd,
                     ctx.buffer(&src),
                     ctx.image(&dst),
                     vk::ImageLayout::TRANSFER_DST_OPTIMAL,
-                    &[region],
+                    &regions,
                 )
             };
             Ok(())

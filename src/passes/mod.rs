@@ -12,9 +12,10 @@ use crate::Result;
 use crate::shaders::{RAYMARCH, RAYMARCH_AOV};
 use crate::vk::{BindingKind, ComputePipeline, Gpu, Sampler};
 
-const RAYMARCH_BINDINGS: [BindingKind; 3] = [
+const RAYMARCH_BINDINGS: [BindingKind; 4] = [
     BindingKind::StorageImage,
     BindingKind::UniformBuffer,
+    BindingKind::SampledImage,
     BindingKind::SampledImage,
 ];
 
@@ -28,6 +29,7 @@ pub struct Pipelines {
     pub bloom_down: ComputePipeline,
     pub bloom_up: ComputePipeline,
     pub linear_clamp: Sampler,
+    pub sky_sampler: Sampler,
 }
 
 impl Pipelines {
@@ -74,6 +76,7 @@ impl Pipelines {
                 std::mem::size_of::<bloom::BloomUpPush>() as u32,
             )?,
             linear_clamp: Sampler::linear_clamp(gpu)?,
+            sky_sampler: Sampler::linear_repeat_u(gpu)?,
         })
     }
 }

@@ -88,6 +88,7 @@ impl RaymarchParams {
             SkyKind::Black => (0.0, 0.0),
             SkyKind::Checker => (1.0, f64::from(scene.sky.squares)),
             SkyKind::Stars => (2.0, scene.sky.star_density),
+            SkyKind::Image | SkyKind::Cubemap => (3.0, 0.0),
         };
         let (e1, e2) = crate::physics::geodesic::disk_basis(glam::DVec3::from(scene.disk.normal));
         RaymarchParams {
@@ -155,6 +156,7 @@ pub fn add_raymarch<'a>(
     pipelines: &'a Pipelines,
     params: vk::Buffer,
     disk_lut: &ImageHandle,
+    sky: &ImageHandle,
     output: RaymarchOutput,
     one_hole: bool,
     volume: bool,
@@ -173,11 +175,15 @@ pub fn add_raymarch<'a>(
     };
     let (width, height) = graph.output_size();
     let mut hdr = graph.create_relative(name, format, 1, 1);
-    let (out, lut) = (hdr.clone(), disk_lut.clone());
-    graph
+    let (out, lut, sky_tex) = (hdr.clone(), disk_lut.clone(), sky.clone());
+    let mut pass = graph
         .add_pass("raymarch")
-        .read(disk_lut, Access::ComputeSampledRead, Mips::ALL)
-        .write(&mut hdr, Access::ComputeStorageWrite, Mips::ALL)
+        .read(disk_lut, Access::ComputeSampledRead, Mips::ALL);
+    // Without an image sky the binding holds the colour table (never sampled).
+    if sky != disk_lut {
+        pass = pass.read(sky, Access::ComputeSampledRead, Mips::ALL);
+    }
+    pass.write(&mut hdr, Access::ComputeStorageWrite, Mips::ALL)
         .record(move |ctx| {
             bind_compute(
                 ctx.gpu,
@@ -187,6 +193,10 @@ pub fn add_raymarch<'a>(
                     Descriptor::StorageImage(ctx.view(&out, 0)),
                     Descriptor::UniformBuffer(params),
                     Descriptor::SampledImage(ctx.full_view(&lut), pipelines.linear_clamp.sampler),
+                    Descriptor::SampledImage(
+                        ctx.full_view(&sky_tex),
+                        pipelines.sky_sampler.sampler,
+                    ),
                 ],
             )?;
             // SAFETY: the pipeline and its descriptors are bound on a recording buffer.

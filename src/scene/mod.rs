@@ -173,6 +173,10 @@ pub enum SkyKind {
     Stars,
     /// Checker squares on the celestial sphere (shows lensing clearly).
     Checker,
+    /// An equirectangular panorama from `image`.
+    Image,
+    /// Six cube-map faces from `cubemap` (+x, -x, +y, -y, +z, -z).
+    Cubemap,
     Black,
 }
 
@@ -188,6 +192,26 @@ pub struct Sky {
     /// Brightness of the galaxy band (stars sky).
     pub galaxy: f64,
     pub brightness: f64,
+    /// Panorama file (PNG, JPEG, HDR, EXR), relative to the scene file.
+    pub image: Option<String>,
+    /// Six face files, +x, -x, +y, -y, +z, -z, relative to the scene file.
+    pub cubemap: Option<Vec<String>>,
+}
+
+impl Sky {
+    /// The files an image or cube-map sky reads, resolved against `base`.
+    pub fn files(&self, base: &Path) -> Vec<std::path::PathBuf> {
+        match self.kind {
+            SkyKind::Image => self.image.iter().map(|f| base.join(f)).collect(),
+            SkyKind::Cubemap => self
+                .cubemap
+                .iter()
+                .flatten()
+                .map(|f| base.join(f))
+                .collect(),
+            _ => Vec::new(),
+        }
+    }
 }
 
 impl Default for Sky {
@@ -198,6 +222,8 @@ impl Default for Sky {
             star_density: 0.5,
             galaxy: 0.02,
             brightness: 1.0,
+            image: None,
+            cubemap: None,
         }
     }
 }
@@ -326,6 +352,9 @@ pub struct Scene {
     /// Seconds since the start of the animation (set per frame, not read from TOML).
     #[serde(skip)]
     pub time: f64,
+    /// Folder that relative file names in the scene are resolved against.
+    #[serde(skip)]
+    pub base_dir: std::path::PathBuf,
 }
 
 impl Default for Scene {
@@ -341,6 +370,7 @@ impl Default for Scene {
             post: Post::default(),
             animation: Animation::default(),
             time: 0.0,
+            base_dir: std::path::PathBuf::new(),
         }
     }
 }
@@ -441,7 +471,10 @@ impl Scene {
                 path: path.to_owned(),
                 source,
             })?;
-            return Self::from_toml(&src, name_or_path);
+            let mut scene = Self::from_toml(&src, name_or_path)?;
+            scene.base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+            scene.check_files(&src, name_or_path)?;
+            return Ok(scene);
         }
         if let Some((name, _, src)) = PRESETS.iter().find(|p| p.0 == name_or_path) {
             return Self::from_toml(src, &format!("preset `{name}`"));
@@ -450,6 +483,28 @@ impl Scene {
             "no scene file or preset named `{name_or_path}` (presets: {})",
             preset_names().join(", ")
         )))
+    }
+
+    /// Checks that the files the scene names exist (decoding comes later).
+    fn check_files(&self, src: &str, origin: &str) -> Result<()> {
+        use locate::Seg::Key;
+        let key = if self.sky.kind == SkyKind::Image {
+            "image"
+        } else {
+            "cubemap"
+        };
+        for f in self.sky.files(&self.base_dir) {
+            if !f.is_file() {
+                let line = locate::line_of_key(src, &[Key("sky"), Key(key)])
+                    .map(|l| format!(":{l}"))
+                    .unwrap_or_default();
+                return Err(Error::Scene(format!(
+                    "{origin}{line}: sky.{key}: cannot read {}: no such file",
+                    f.display()
+                )));
+            }
+        }
+        Ok(())
     }
 
     /// The built-in default scene.
@@ -633,6 +688,20 @@ impl Scene {
         }
 
         let s = &self.sky;
+        if s.kind == SkyKind::Image && s.image.is_none() {
+            return err(
+                vec![Key("sky"), Key("kind")],
+                "\"image\"".into(),
+                "needs sky.image = \"panorama file\"",
+            );
+        }
+        if s.kind == SkyKind::Cubemap && s.cubemap.as_ref().is_none_or(|c| c.len() != 6) {
+            return err(
+                vec![Key("sky"), Key("kind")],
+                "\"cubemap\"".into(),
+                "needs sky.cubemap = [six files: +x, -x, +y, -y, +z, -z]",
+            );
+        }
         if !(s.star_density.is_finite() && (0.0..=1.0).contains(&s.star_density)) {
             return err(
                 vec![Key("sky"), Key("star_density")],

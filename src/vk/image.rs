@@ -149,6 +149,27 @@ impl Sampler {
     }
 }
 
+impl Sampler {
+    /// Linear filtering with mips, repeating in u (longitude), clamped in v.
+    pub fn linear_repeat_u(gpu: &Arc<Gpu>) -> Result<Self> {
+        let info = vk::SamplerCreateInfo::default()
+            .mag_filter(vk::Filter::LINEAR)
+            .min_filter(vk::Filter::LINEAR)
+            .mipmap_mode(vk::SamplerMipmapMode::LINEAR)
+            .address_mode_u(vk::SamplerAddressMode::REPEAT)
+            .address_mode_v(vk::SamplerAddressMode::CLAMP_TO_EDGE)
+            .address_mode_w(vk::SamplerAddressMode::CLAMP_TO_EDGE)
+            .max_lod(vk::LOD_CLAMP_NONE);
+        // SAFETY: valid device.
+        let sampler = unsafe { gpu.device.create_sampler(&info, None) }
+            .ctx(|| "creating the sky sampler".into())?;
+        Ok(Sampler {
+            gpu: gpu.clone(),
+            sampler,
+        })
+    }
+}
+
 impl Drop for Sampler {
     fn drop(&mut self) {
         // SAFETY: owners outlive every frame that uses the sampler.

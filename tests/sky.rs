@@ -1,0 +1,136 @@
+//! Image skies: an equirectangular panorama and a cube map, sampled where the
+//! convention says, and clear errors for missing files.
+
+mod common;
+
+use common::{assert_clean, blackhole, path_in, run, scratch};
+
+/// A scene with gravity off and the hole far away, camera at the origin
+/// looking along `look`, so each pixel sees the sky in its own direction.
+fn scene(sky: &str, look: [f64; 3]) -> String {
+    format!(
+        "[camera]\nposition = [0.0, 0.0, 0.0]\nlook_at = [{}, {}, {}]\nvfov_deg = 20.0\n\n\
+         [[black_hole]]\nposition = [500.0, 500.0, 500.0]\nrs = 0.01\n\n\
+         [disk]\nkind = \"none\"\n\n[physics]\ngravity = false\n\n[bloom]\nstrength = 0.0\n\n\
+         [post]\ntonemap = \"linear\"\ndither = false\n\n[sky]\n{sky}",
+        look[0], look[1], look[2]
+    )
+}
+
+fn centre(dir: &tempfile::TempDir, name: &str, toml: &str) -> image::Rgb<u8> {
+    let path = path_in(dir, &format!("{name}.toml"));
+    std::fs::write(&path, toml).unwrap();
+    let out = path_in(dir, &format!("{name}.png"));
+    let mut c = blackhole();
+    c.args(["render", "--width", "33", "--height", "33", "--scene"])
+        .arg(&path)
+        .arg("--out")
+        .arg(&out);
+    let (code, stdout, stderr) = run(c);
+    assert_clean(code, &stdout, &stderr);
+    *image::open(&out).unwrap().to_rgb8().get_pixel(16, 16)
+}
+
+fn dominant(p: image::Rgb<u8>) -> usize {
+    (0..3).max_by_key(|&k| p[k]).unwrap_or(0)
+}
+
+#[test]
+fn panorama_is_sampled_by_longitude_and_latitude() {
+    let dir = scratch();
+    // 64x32 panorama: u in [0.4, 0.6) red (looking along +x), u in [0.65, 0.85)
+    // green (+z), the top rows blue (+y), the rest dark grey.
+    let mut pano = image::RgbImage::from_pixel(64, 32, image::Rgb([20, 20, 20]));
+    for y in 0..32 {
+        for x in 0..64 {
+            let u = (f64::from(x) + 0.5) / 64.0;
+            let c = if y < 4 {
+                [0, 0, 255]
+            } else if (0.4..0.6).contains(&u) {
+                [255, 0, 0]
+            } else if (0.65..0.85).contains(&u) {
+                [0, 255, 0]
+            } else {
+                continue;
+            };
+            pano.put_pixel(x, y, image::Rgb(c));
+        }
+    }
+    pano.save(path_in(&dir, "pano.png")).unwrap();
+    let sky = "kind = \"image\"\nimage = \"pano.png\"\n";
+    assert_eq!(
+        dominant(centre(&dir, "x", &scene(sky, [1.0, 0.0, 0.0]))),
+        0,
+        "+x is red"
+    );
+    assert_eq!(
+        dominant(centre(&dir, "z", &scene(sky, [0.0, 0.0, 1.0]))),
+        1,
+        "+z is green"
+    );
+    let up = scene(sky, [0.0, 1.0, 0.0])
+        .replace("vfov_deg = 20.0", "vfov_deg = 20.0\nup = [0.0, 0.0, 1.0]");
+    assert_eq!(dominant(centre(&dir, "y", &up)), 2, "+y is blue");
+}
+
+#[test]
+fn cube_map_faces_land_in_their_directions() {
+    let dir = scratch();
+    let colours = [
+        [255, 0, 0],
+        [0, 255, 255],
+        [0, 255, 0],
+        [255, 0, 255],
+        [0, 0, 255],
+        [255, 255, 0],
+    ];
+    let names = ["px", "nx", "py", "ny", "pz", "nz"];
+    for (n, c) in names.iter().zip(colours) {
+        image::RgbImage::from_pixel(16, 16, image::Rgb(c))
+            .save(path_in(&dir, &format!("{n}.png")))
+            .unwrap();
+    }
+    let sky = "kind = \"cubemap\"\ncubemap = [\"px.png\", \"nx.png\", \"py.png\", \"ny.png\", \"pz.png\", \"nz.png\"]\n";
+    let p = centre(&dir, "cx", &scene(sky, [1.0, 0.0, 0.0]));
+    assert!(p[0] > 200 && p[1] < 40 && p[2] < 40, "+x face red: {p:?}");
+    let p = centre(&dir, "cz", &scene(sky, [0.0, 0.0, 1.0]));
+    assert!(p[2] > 200 && p[0] < 40 && p[1] < 40, "+z face blue: {p:?}");
+    let p = centre(&dir, "cnz", &scene(sky, [0.0, 0.0, -1.0]));
+    assert!(
+        p[0] > 200 && p[1] > 200 && p[2] < 40,
+        "-z face yellow: {p:?}"
+    );
+}
+
+#[test]
+fn a_missing_sky_file_is_named() {
+    let dir = scratch();
+    let path = path_in(&dir, "bad.toml");
+    std::fs::write(&path, "[sky]\nkind = \"image\"\nimage = \"nowhere.hdr\"\n").unwrap();
+    let out = path_in(&dir, "bad.png");
+    let mut c = blackhole();
+    c.args(["render", "--scene"])
+        .arg(&path)
+        .arg("--out")
+        .arg(&out);
+    let (code, _, stderr) = run(c);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains("nowhere.hdr") && stderr.contains("bad.toml:3"),
+        "{stderr}"
+    );
+    assert!(!out.exists());
+
+    // A file that exists but is not an image: named, with the decoder's reason.
+    std::fs::write(path_in(&dir, "junk.png"), b"not a png").unwrap();
+    std::fs::write(&path, "[sky]\nkind = \"image\"\nimage = \"junk.png\"\n").unwrap();
+    let mut c = blackhole();
+    c.args(["render", "--scene"])
+        .arg(&path)
+        .arg("--out")
+        .arg(&out);
+    let (code, _, stderr) = run(c);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("junk.png"), "{stderr}");
+    assert!(!out.exists());
+}
