@@ -232,6 +232,7 @@ Hit trace_planar(vec3 x, vec3 d) {
             float phi_inf = phi + h * s.x / (s.x - sn2.x);
             hit.outcome = OUT_ESCAPED;
             hit.dir = cos(phi_inf) * e1 + sin(phi_inf) * e2;
+            hit.pos = c + (cos(phi) * e1 + sin(phi) * e2) / s.x;  // last finite point
             return hit;
         }
         if (sn2.x >= u_capture) {
@@ -254,6 +255,7 @@ Hit trace_planar(vec3 x, vec3 d) {
                 float phi_inf = phi + atan(s.x, -s.y) + delta;
                 hit.outcome = OUT_ESCAPED;
                 hit.dir = cos(phi_inf) * e1 + sin(phi_inf) * e2;
+                hit.pos = c + R * (cos(phi) * e1 + sin(phi) * e2);
                 return hit;
             }
         }
@@ -345,6 +347,7 @@ Hit trace(vec3 x, vec3 v) {
         if (rmin > r_esc && dot(xn - c0, vn) > 0.0) {
             hit.outcome = OUT_ESCAPED;
             hit.dir = gravity ? asymptotic_direction(xn, vn) : normalize(vn);
+            hit.pos = xn;
             return hit;
         }
 
@@ -383,7 +386,11 @@ void main() {
     imageStore(out_img, ivec2(px), aov);
 #else
     vec3 color = vec3(0.0);
-    if (hit.outcome == OUT_ESCAPED) color = sky_color(hit.dir, 2.0 * tan_half / float(hgt));
+    if (hit.outcome == OUT_ESCAPED) {
+        float pixel_angle = 2.0 * tan_half / float(hgt);
+        color = sky_color(hit.dir, pixel_angle);
+        grid_plane(hit.pos, hit.dir, pixel_angle, color);
+    }
     else if (hit.outcome == OUT_DISK) color = disk_color(length(hit.pos - P.holes[0].xyz), hit.g);
     color = hit.glow + hit.trans * color;
     imageStore(out_img, ivec2(px), vec4(color, 1.0));

@@ -27,6 +27,9 @@ layout(std140, binding = 1) uniform RaymarchParams {
     vec4 disk_e2;      // xyz: e1 x normal (azimuth 90 degrees)
     vec4 disk_temp;    // x: peak temperature (K), y: NT profile at the peak, z: Doppler on, w: redshift on
     vec4 vol0;         // volumetric disk: x: half height, y: vertical falloff, z: radial falloff, w: noise scale
+    vec4 plane_pos;    // grid plane: xyz: a point on it, w: 1 on / 0 off
+    vec4 plane_n;      // xyz: unit normal facing the camera, w: line spacing
+    vec4 plane_u;      // xyz: in-plane axis, w: half size
     vec4 vol1;         // x: noise octaves, y: rotation time (speed x time), z: lit (emission scale), w: 1 blackbody / 0 colour map
     vec4 sky;          // x: sky kind, y: checker squares or star density, z: brightness, w: galaxy band
     vec4 integ;        // x: tolerance, y: escape radius, z: gravity on (1/0), w: Binet far-field step (rad)

@@ -109,6 +109,37 @@ vec3 sky_image(vec3 d, float pixel_angle) {
     return textureLod(sky_tex, vec2(u, v), lod).rgb * P.sky.z;
 }
 
+// The first seed's grid plane behind the hole: a finite square of lines that
+// escaping rays reach along their final straight line (the path is straight
+// to well under a pixel out there), drawn over the sky.
+void grid_plane(vec3 p, vec3 d, float pixel_angle, inout vec3 color) {
+    if (P.plane_pos.w < 0.5) return;
+    vec3 n = P.plane_n.xyz;
+    float dn = dot(d, n);
+    if (dn >= -1e-6) return;                         // moving away from its face
+    float t = dot(P.plane_pos.xyz - p, n) / dn;
+    vec3 q = p + t * d;
+    if (dot(q - P.holes[0].xyz, d) <= 0.0) return;   // behind the outgoing ray
+    vec3 rel = q - P.plane_pos.xyz;
+    vec3 v_axis = cross(n, P.plane_u.xyz);
+    vec2 uv = vec2(dot(rel, P.plane_u.xyz), dot(rel, v_axis));
+    if (any(greaterThan(abs(uv), vec2(P.plane_u.w)))) return;
+    vec2 cell = uv / P.plane_n.w;
+    vec2 dist = abs(cell - round(cell));             // 0 on a line
+    // Filter the lines by the pixel's footprint on the plane (in cells,
+    // unlensed): soft edges as wide as a pixel, and the mean coverage once
+    // the cells shrink below a few pixels, instead of moire.
+    const float HALF_WIDTH = 0.04;
+    float fp = pixel_angle * t / (abs(dn) * P.plane_n.w);
+    float aa = max(0.5 * fp, 0.01);
+    vec2 cover = 1.0 - smoothstep(HALF_WIDTH - aa, HALF_WIDTH + aa, dist);
+    float line = max(cover.x, cover.y);
+    float mean = 1.0 - (1.0 - 2.0 * HALF_WIDTH) * (1.0 - 2.0 * HALF_WIDTH);
+    line = mix(line, mean, smoothstep(0.25, 0.75, fp));
+    vec3 base = vec3(0.02, 0.025, 0.04);
+    color = mix(base, vec3(0.9, 0.75, 0.35), line);
+}
+
 vec3 sky_color(vec3 d, float pixel_angle) {
     int kind = int(P.sky.x);
     if (kind == SKY_IMAGE) return sky_image(d, pixel_angle);

@@ -44,6 +44,9 @@ pub struct RaymarchParams {
     pub disk_e2: [f32; 4],
     pub disk_temp: [f32; 4],
     pub vol0: [f32; 4],
+    pub plane_pos: [f32; 4],
+    pub plane_n: [f32; 4],
+    pub plane_u: [f32; 4],
     pub vol1: [f32; 4],
     pub sky: [f32; 4],
     pub integ: [f32; 4],
@@ -84,6 +87,13 @@ impl RaymarchParams {
             DiskKind::Volumetric => 2.0,
         };
         let d = &scene.disk;
+        let plane_n = glam::DVec3::from(scene.plane.normal).normalize();
+        // An in-plane axis: world x projected, or z if the normal is along x.
+        let mut plane_u = glam::DVec3::X - plane_n * plane_n.x;
+        if plane_u.length() < 1e-6 {
+            plane_u = glam::DVec3::Z - plane_n * plane_n.z;
+        }
+        let plane_u = plane_u.normalize();
         let (sky_kind, sky_param) = match scene.sky.kind {
             SkyKind::Black => (0.0, 0.0),
             SkyKind::Checker => (1.0, f64::from(scene.sky.squares)),
@@ -117,6 +127,12 @@ impl RaymarchParams {
                 d.density_h as f32,
                 d.noise_scale as f32,
             ],
+            plane_pos: v4(
+                glam::DVec3::from(scene.plane.position),
+                f64::from(u8::from(scene.plane.enabled)),
+            ),
+            plane_n: v4(plane_n, scene.plane.spacing),
+            plane_u: v4(plane_u, scene.plane.size),
             vol1: [
                 d.noise_octaves as f32,
                 (d.speed * scene.time) as f32,

@@ -228,6 +228,33 @@ impl Default for Sky {
     }
 }
 
+/// The first seed's grid plane behind the hole.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct GridPlane {
+    pub enabled: bool,
+    /// A point on the plane (its centre).
+    pub position: [f64; 3],
+    /// Normal, facing the camera.
+    pub normal: [f64; 3],
+    /// Distance between grid lines.
+    pub spacing: f64,
+    /// Half the side of the square.
+    pub size: f64,
+}
+
+impl Default for GridPlane {
+    fn default() -> Self {
+        GridPlane {
+            enabled: false,
+            position: [0.0, 0.0, 40.0],
+            normal: [0.0, 0.0, -1.0],
+            spacing: 2.0,
+            size: 60.0,
+        }
+    }
+}
+
 /// Integration quality.
 #[derive(Clone, Debug, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -344,6 +371,8 @@ pub struct Scene {
     pub black_holes: Vec<BlackHole>,
     pub disk: Disk,
     pub sky: Sky,
+    #[serde(rename = "grid_plane")]
+    pub plane: GridPlane,
     pub quality: Quality,
     pub physics: Physics,
     pub bloom: Bloom,
@@ -364,6 +393,7 @@ impl Default for Scene {
             black_holes: vec![BlackHole::default()],
             disk: Disk::default(),
             sky: Sky::default(),
+            plane: GridPlane::default(),
             quality: Quality::default(),
             physics: Physics::default(),
             bloom: Bloom::default(),
@@ -752,6 +782,30 @@ impl Scene {
                 q.escape_radius.to_string(),
                 "must be a finite number >= 0 (0 = automatic)",
             );
+        }
+        let gp = &self.plane;
+        if !finite3(&gp.position) {
+            return err(
+                vec![Key("grid_plane"), Key("position")],
+                vec3(&gp.position),
+                "must be finite numbers",
+            );
+        }
+        if !finite3(&gp.normal) || DVec3::from(gp.normal).length() < 1e-9 {
+            return err(
+                vec![Key("grid_plane"), Key("normal")],
+                vec3(&gp.normal),
+                "must be a finite, non-zero vector",
+            );
+        }
+        for (name, v) in [("spacing", gp.spacing), ("size", gp.size)] {
+            if !(v.is_finite() && v > 0.0) {
+                return err(
+                    vec![Key("grid_plane"), Key(name)],
+                    v.to_string(),
+                    "must be a finite number > 0",
+                );
+            }
         }
         let b = &self.bloom;
         for (name, v) in [
