@@ -27,20 +27,35 @@ enum Aov {
     Geodesic,
 }
 
+/// What to render and at what size (shared by `render` and `profile`).
+#[derive(clap::Args)]
+struct View {
+    /// Scene TOML file or built-in preset name (default: the built-in default scene).
+    #[arg(long)]
+    scene: Option<String>,
+    /// Image width in pixels.
+    #[arg(long, default_value_t = 1280, value_parser = clap::value_parser!(u32).range(1..=16384))]
+    width: u32,
+    /// Image height in pixels.
+    #[arg(long, default_value_t = 720, value_parser = clap::value_parser!(u32).range(1..=16384))]
+    height: u32,
+}
+
+/// The named scene or preset, or the built-in default.
+fn load_scene(name: Option<&str>) -> Result<Scene, Error> {
+    match name {
+        Some(s) => Scene::load(s),
+        None => Scene::builtin_default(),
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
-    /// Render a still offscreen to PNG (8-bit sRGB, tone-mapped) or EXR (linear HDR).
+    /// Render a still or a sequence offscreen to PNG (8-bit sRGB, tone-mapped) or EXR (linear HDR).
     #[command(after_help = presets_help())]
     Render {
-        /// Scene TOML file or built-in preset name (default: the built-in default scene).
-        #[arg(long)]
-        scene: Option<String>,
-        /// Image width in pixels.
-        #[arg(long, default_value_t = 1280, value_parser = clap::value_parser!(u32).range(1..=16384))]
-        width: u32,
-        /// Image height in pixels.
-        #[arg(long, default_value_t = 720, value_parser = clap::value_parser!(u32).range(1..=16384))]
-        height: u32,
+        #[command(flatten)]
+        view: View,
         /// Output file; the extension chooses the format (.png or .exr).
         #[arg(long, default_value = "blackhole.png")]
         out: PathBuf,
@@ -67,15 +82,8 @@ enum Command {
     /// Render N frames and print GPU time per pass (median, p95, share of frame).
     #[command(after_help = presets_help())]
     Profile {
-        /// Scene TOML file or built-in preset name (default: the built-in default scene).
-        #[arg(long)]
-        scene: Option<String>,
-        /// Image width in pixels.
-        #[arg(long, default_value_t = 1280, value_parser = clap::value_parser!(u32).range(1..=16384))]
-        width: u32,
-        /// Image height in pixels.
-        #[arg(long, default_value_t = 720, value_parser = clap::value_parser!(u32).range(1..=16384))]
-        height: u32,
+        #[command(flatten)]
+        view: View,
         /// Frames to time (after one warm-up frame).
         #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u32).range(1..=100000))]
         frames: u32,
@@ -155,9 +163,12 @@ fn main() -> ExitCode {
 fn run(cli: Cli) -> Result<ExitCode, Error> {
     match cli.command {
         Command::Render {
-            scene,
-            width,
-            height,
+            view:
+                View {
+                    scene,
+                    width,
+                    height,
+                },
             out,
             aov,
             frames,
@@ -171,10 +182,7 @@ fn run(cli: Cli) -> Result<ExitCode, Error> {
                     out.display()
                 )));
             }
-            let scene = match scene {
-                Some(s) => Scene::load(&s)?,
-                None => Scene::builtin_default()?,
-            };
+            let scene = load_scene(scene.as_deref())?;
             if aov == Aov::Geodesic && scene.disk.kind == blackhole::scene::DiskKind::Volumetric {
                 return Err(Error::Usage(
                     "--aov geodesic needs a thin disk (or none); this scene's disk is volumetric"
@@ -226,25 +234,22 @@ fn run(cli: Cli) -> Result<ExitCode, Error> {
             finish(renderer)
         }
         Command::Trace { scene, out } => {
-            let scene = match scene {
-                Some(s) => Scene::load(&s)?,
-                None => Scene::builtin_default()?,
-            };
+            let scene = load_scene(scene.as_deref())?;
             blackhole::trace_plot::write_svg(&scene, &out)?;
             println!("wrote {}", out.display());
             Ok(ExitCode::SUCCESS)
         }
         Command::Profile {
-            scene,
-            width,
-            height,
+            view:
+                View {
+                    scene,
+                    width,
+                    height,
+                },
             frames,
             json,
         } => {
-            let scene = match scene {
-                Some(s) => Scene::load(&s)?,
-                None => Scene::builtin_default()?,
-            };
+            let scene = load_scene(scene.as_deref())?;
             let mut renderer = Renderer::new(RendererOptions::default())?;
             let report = blackhole::profile::run(&mut renderer, &scene, width, height, frames)?;
             print!("{}", report.table());

@@ -193,16 +193,7 @@ impl Renderer {
             OutputKind::Geodesic => 16,
         };
         let needed = u64::from(width) * u64::from(height) * texel_bytes;
-        if self.readback.as_ref().is_none_or(|b| b.size < needed) {
-            self.readback = None;
-            self.readback = Some(Buffer::new(
-                &self.gpu,
-                "readback",
-                needed,
-                vk::BufferUsageFlags::TRANSFER_DST,
-                MemoryLocation::GpuToCpu,
-            )?);
-        }
+        self.ensure_readback(needed)?;
         let readback = self
             .readback
             .as_ref()
@@ -263,18 +254,13 @@ impl Renderer {
             OutputKind::Hdr | OutputKind::Geodesic => hdr,
         };
         copy::add_copy_to_buffer(&mut g, &result, &mut out_buf);
-        let compiled = g.compile()?;
-
-        let cmd = self.commands.begin()?;
-        let names = graph::execute::execute(
+        let names = run_graph(
             g,
-            &compiled,
             &self.gpu,
-            cmd,
+            &mut self.commands,
             &mut self.transients,
             self.timestamps.as_ref(),
         )?;
-        self.commands.submit_and_wait()?;
 
         let timings = self.read_timings(&names)?;
         let bytes = &readback.mapped()?[..needed as usize];
@@ -328,16 +314,7 @@ impl Renderer {
         )?;
         staging.mapped_mut()?.copy_from_slice(bytes);
         let needed = 4 * texels as u64;
-        if self.readback.as_ref().is_none_or(|b| b.size < needed) {
-            self.readback = None;
-            self.readback = Some(Buffer::new(
-                &self.gpu,
-                "readback",
-                needed,
-                vk::BufferUsageFlags::TRANSFER_DST,
-                MemoryLocation::GpuToCpu,
-            )?);
-        }
+        self.ensure_readback(needed)?;
         let readback = self
             .readback
             .as_ref()
@@ -362,17 +339,13 @@ impl Renderer {
         let blur = passes::bloom::add_bloom(&mut g, pipelines, &input, bloom);
         let ldr = composite::add_composite(&mut g, pipelines, &input, blur.as_ref(), bloom, post);
         copy::add_copy_to_buffer(&mut g, &ldr, &mut out_buf);
-        let compiled = g.compile()?;
-        let cmd = self.commands.begin()?;
-        let names = graph::execute::execute(
+        let names = run_graph(
             g,
-            &compiled,
             &self.gpu,
-            cmd,
+            &mut self.commands,
             &mut self.transients,
             self.timestamps.as_ref(),
         )?;
-        self.commands.submit_and_wait()?;
         let timings = self.read_timings(&names)?;
         let pixels = Pixels::Rgba8(readback.mapped()?[..needed as usize].to_vec());
         Ok(Frame {
@@ -381,6 +354,21 @@ impl Renderer {
             pixels,
             timings,
         })
+    }
+
+    /// Makes sure the readback buffer holds at least `needed` bytes.
+    fn ensure_readback(&mut self, needed: u64) -> Result<()> {
+        if self.readback.as_ref().is_none_or(|b| b.size < needed) {
+            self.readback = None;
+            self.readback = Some(Buffer::new(
+                &self.gpu,
+                "readback",
+                needed,
+                vk::BufferUsageFlags::TRANSFER_DST,
+                MemoryLocation::GpuToCpu,
+            )?);
+        }
+        Ok(())
     }
 
     /// Loads and uploads the scene's image sky if it differs from the one held.
@@ -452,8 +440,63 @@ impl Renderer {
     }
 }
 
-/// Builds the blackbody colour table on the CPU and uploads it through a
-/// one-pass graph; returns the image, left ready for sampling.
+/// Compiles `g`, records it, submits and waits; returns the timed passes' names.
+fn run_graph(
+    g: Graph<'_>,
+    gpu: &Gpu,
+    commands: &mut CommandContext,
+    transients: &mut TransientPool,
+    timestamps: Option<&TimestampPool>,
+) -> Result<Vec<String>> {
+    let compiled = g.compile()?;
+    let cmd = commands.begin()?;
+    let names = graph::execute::execute(g, &compiled, gpu, cmd, transients, timestamps)?;
+    commands.submit_and_wait()?;
+    Ok(names)
+}
+
+/// Creates a sampled image and fills every mip level from `bytes` (levels
+/// packed one after the other) through a one-pass graph; the image is left
+/// ready for sampling in compute shaders.
+fn upload_image(
+    gpu: &Arc<Gpu>,
+    commands: &mut CommandContext,
+    transients: &mut TransientPool,
+    name: &str,
+    desc: ImageDesc,
+    bytes: &[u8],
+    texel_bytes: u64,
+) -> Result<Image> {
+    let image = Image::new(
+        gpu,
+        name,
+        desc,
+        vk::ImageUsageFlags::SAMPLED | vk::ImageUsageFlags::TRANSFER_DST,
+    )?;
+    let staging_name = format!("{name} staging");
+    let mut staging = Buffer::new(
+        gpu,
+        &staging_name,
+        bytes.len() as u64,
+        vk::BufferUsageFlags::TRANSFER_SRC,
+        MemoryLocation::CpuToGpu,
+    )?;
+    staging.mapped_mut()?.copy_from_slice(bytes);
+    let mut g = Graph::new(desc.width, desc.height);
+    let src = g.import_buffer(&staging_name, staging.binding(), Access::HostWrite, None);
+    let mut dst = g.import_image(
+        name,
+        desc,
+        image.binding(),
+        Access::Nothing,
+        Some(Access::ComputeSampledRead),
+    );
+    copy::add_upload(&mut g, &src, &mut dst, texel_bytes);
+    run_graph(g, gpu, commands, transients, None)?;
+    Ok(image)
+}
+
+/// Builds the blackbody colour table on the CPU and uploads it.
 fn upload_disk_lut(
     gpu: &Arc<Gpu>,
     commands: &mut CommandContext,
@@ -466,45 +509,18 @@ fn upload_disk_lut(
         blackbody::LUT_SIZE as u32,
         1,
     );
-    let image = Image::new(
+    upload_image(
         gpu,
+        commands,
+        transients,
         "disk lut",
         desc,
-        vk::ImageUsageFlags::SAMPLED | vk::ImageUsageFlags::TRANSFER_DST,
-    )?;
-    let bytes: &[u8] = bytemuck::cast_slice(&texels);
-    let mut staging = Buffer::new(
-        gpu,
-        "disk lut staging",
-        bytes.len() as u64,
-        vk::BufferUsageFlags::TRANSFER_SRC,
-        MemoryLocation::CpuToGpu,
-    )?;
-    staging.mapped_mut()?.copy_from_slice(bytes);
-
-    let mut g = Graph::new(desc.width, desc.height);
-    let src = g.import_buffer(
-        "disk lut staging",
-        staging.binding(),
-        Access::HostWrite,
-        None,
-    );
-    let mut dst = g.import_image(
-        "disk lut",
-        desc,
-        image.binding(),
-        Access::Nothing,
-        Some(Access::ComputeSampledRead),
-    );
-    copy::add_upload(&mut g, &src, &mut dst, 16);
-    let compiled = g.compile()?;
-    let cmd = commands.begin()?;
-    graph::execute::execute(g, &compiled, gpu, cmd, transients, None)?;
-    commands.submit_and_wait()?;
-    Ok(image)
+        bytemuck::cast_slice(&texels),
+        16,
+    )
 }
 
-/// Uploads a sky panorama with its mips as RGBA16F through a one-pass graph.
+/// Uploads a sky panorama with its mips as RGBA16F.
 fn upload_sky(
     gpu: &Arc<Gpu>,
     commands: &mut CommandContext,
@@ -522,34 +538,13 @@ fn upload_sky(
         .flatten()
         .flat_map(|t| t.map(half::f16::from_f32))
         .collect();
-    let bytes: &[u8] = bytemuck::cast_slice(&halves);
-    let image = Image::new(
+    upload_image(
         gpu,
+        commands,
+        transients,
         "sky",
         desc,
-        vk::ImageUsageFlags::SAMPLED | vk::ImageUsageFlags::TRANSFER_DST,
-    )?;
-    let mut staging = Buffer::new(
-        gpu,
-        "sky staging",
-        bytes.len() as u64,
-        vk::BufferUsageFlags::TRANSFER_SRC,
-        MemoryLocation::CpuToGpu,
-    )?;
-    staging.mapped_mut()?.copy_from_slice(bytes);
-    let mut g = Graph::new(desc.width, desc.height);
-    let src = g.import_buffer("sky staging", staging.binding(), Access::HostWrite, None);
-    let mut dst = g.import_image(
-        "sky",
-        desc,
-        image.binding(),
-        Access::Nothing,
-        Some(Access::ComputeSampledRead),
-    );
-    copy::add_upload(&mut g, &src, &mut dst, 8);
-    let compiled = g.compile()?;
-    let cmd = commands.begin()?;
-    graph::execute::execute(g, &compiled, gpu, cmd, transients, None)?;
-    commands.submit_and_wait()?;
-    Ok(image)
+        bytemuck::cast_slice(&halves),
+        8,
+    )
 }
