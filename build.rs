@@ -4,8 +4,10 @@
 use std::path::{Path, PathBuf};
 
 /// Extra builds of a shader with preprocessor macros: (source, output stem, defines).
-const VARIANTS: &[(&str, &str, &[&str])] =
-    &[("raymarch.comp", "raymarch_aov.comp", &["GEODESIC_AOV"])];
+const VARIANTS: &[(&str, &str, &[&str])] = &[
+    ("raymarch.comp", "raymarch_aov.comp", &["GEODESIC_AOV"]),
+    ("composite.comp", "composite_hdr.comp", &["HDR_OUTPUT"]),
+];
 
 fn main() {
     if let Err(e) = run() {

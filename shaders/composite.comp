@@ -8,7 +8,12 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D hdr;
+#ifdef HDR_OUTPUT
+// --exr-post: bloom and exposure applied, no tone map, linear HDR out.
+layout(binding = 1, rgba16f) uniform writeonly image2D ldr;
+#else
 layout(binding = 1, rgba8) uniform writeonly image2D ldr;
+#endif
 layout(binding = 2) uniform sampler2D bloom;   // level 0 of the bloom chain
 
 #define TONEMAP_ACES_HILL 0
@@ -65,6 +70,10 @@ void main() {
         c += pc.bloom_strength * textureLod(bloom, uv, 0.0).rgb;
     }
     c *= pc.exposure;
+#ifdef HDR_OUTPUT
+    imageStore(ldr, px, vec4(c, 1.0));
+    return;
+#endif
     vec3 t = pc.tonemap == TONEMAP_ACES_HILL ? aces_hill(c)
            : pc.tonemap == TONEMAP_ACES_NARKOWICZ ? aces_narkowicz(c)
            : clamp(c, 0.0, 1.0);

@@ -68,6 +68,10 @@ enum Command {
         /// Frame i is at time i / fps, so ranges can be split across machines.
         #[arg(long, value_name = "A..B", value_parser = parse_range)]
         frames: Option<std::ops::Range<u64>>,
+        /// With an .exr --out: apply bloom and exposure (still linear, no tone
+        /// map). Without it an EXR is the ray march's radiance as it is.
+        #[arg(long)]
+        exr_post: bool,
     },
     /// Plot photon paths in the hole's equatorial plane (SVG), with the horizon,
     /// the photon sphere and the ISCO.
@@ -172,6 +176,7 @@ fn run(cli: Cli) -> Result<ExitCode, Error> {
             out,
             aov,
             frames,
+            exr_post,
         } => {
             // Check everything the user gave before touching the GPU.
             let format = FileFormat::from_path(&out)?;
@@ -182,6 +187,11 @@ fn run(cli: Cli) -> Result<ExitCode, Error> {
                     out.display()
                 )));
             }
+            if exr_post && (format != FileFormat::Exr || aov != Aov::Beauty) {
+                return Err(Error::Usage(
+                    "--exr-post applies to the image (--aov beauty) written as .exr".into(),
+                ));
+            }
             let scene = load_scene(scene.as_deref())?;
             if aov == Aov::Geodesic && scene.disk.kind == blackhole::scene::DiskKind::Volumetric {
                 return Err(Error::Usage(
@@ -190,6 +200,7 @@ fn run(cli: Cli) -> Result<ExitCode, Error> {
                 ));
             }
             let kind = match aov {
+                Aov::Beauty if exr_post => blackhole::OutputKind::HdrPost,
                 Aov::Beauty => format.output_kind(),
                 Aov::Geodesic => blackhole::OutputKind::Geodesic,
             };

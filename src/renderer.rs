@@ -22,6 +22,8 @@ pub enum OutputKind {
     Hdr,
     /// The geodesic AOV (DESIGN.md section 4), RGBA32F.
     Geodesic,
+    /// Linear HDR after bloom and exposure, before the tone map (`--exr-post`).
+    HdrPost,
 }
 
 /// Pixels read back from the GPU, row 0 at the top.
@@ -189,7 +191,7 @@ impl Renderer {
         }
         let texel_bytes: u64 = match kind {
             OutputKind::Ldr => 4,
-            OutputKind::Hdr => 8,
+            OutputKind::Hdr | OutputKind::HdrPost => 8,
             OutputKind::Geodesic => 16,
         };
         let needed = u64::from(width) * u64::from(height) * texel_bytes;
@@ -210,7 +212,9 @@ impl Renderer {
         );
         let mode = match kind {
             OutputKind::Geodesic => raymarch::RaymarchOutput::Geodesic,
-            OutputKind::Ldr | OutputKind::Hdr => raymarch::RaymarchOutput::Beauty,
+            OutputKind::Ldr | OutputKind::Hdr | OutputKind::HdrPost => {
+                raymarch::RaymarchOutput::Beauty
+            }
         };
         let lut = g.import_image(
             "disk lut",
@@ -240,7 +244,7 @@ impl Renderer {
             scene.disk.kind == crate::scene::DiskKind::Volumetric,
         );
         let result = match kind {
-            OutputKind::Ldr => {
+            OutputKind::Ldr | OutputKind::HdrPost => {
                 let bloom = passes::bloom::add_bloom(&mut g, pipelines, &hdr, &scene.bloom);
                 composite::add_composite(
                     &mut g,
@@ -249,6 +253,7 @@ impl Renderer {
                     bloom.as_ref(),
                     &scene.bloom,
                     &scene.post,
+                    kind == OutputKind::HdrPost,
                 )
             }
             OutputKind::Hdr | OutputKind::Geodesic => hdr,
@@ -266,7 +271,7 @@ impl Renderer {
         let bytes = &readback.mapped()?[..needed as usize];
         let pixels = match kind {
             OutputKind::Ldr => Pixels::Rgba8(bytes.to_vec()),
-            OutputKind::Hdr => Pixels::Rgba32F(
+            OutputKind::Hdr | OutputKind::HdrPost => Pixels::Rgba32F(
                 bytes
                     .chunks_exact(2)
                     .map(|c| half::f16::from_le_bytes([c[0], c[1]]).to_f32())
@@ -337,7 +342,8 @@ impl Renderer {
         let mut input = g.create_relative("hdr input", vk::Format::R32G32B32A32_SFLOAT, 1, 1);
         copy::add_upload(&mut g, &src, &mut input, 16);
         let blur = passes::bloom::add_bloom(&mut g, pipelines, &input, bloom);
-        let ldr = composite::add_composite(&mut g, pipelines, &input, blur.as_ref(), bloom, post);
+        let ldr =
+            composite::add_composite(&mut g, pipelines, &input, blur.as_ref(), bloom, post, false);
         copy::add_copy_to_buffer(&mut g, &ldr, &mut out_buf);
         let names = run_graph(
             g,

@@ -10,3 +10,6 @@ pub const RAYMARCH_AOV: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/raymar
 pub const BLOOM_DOWN: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/bloom_down.comp.spv"));
 /// Bloom upsample (`shaders/bloom_up.comp`).
 pub const BLOOM_UP: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/bloom_up.comp.spv"));
+/// The composite writing linear HDR (`composite.comp` with `HDR_OUTPUT`).
+pub const COMPOSITE_HDR: &[u8] =
+    include_bytes!(concat!(env!("OUT_DIR"), "/composite_hdr.comp.spv"));

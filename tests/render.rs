@@ -371,3 +371,60 @@ fn bad_frame_ranges_and_missing_folders_are_rejected() {
         "{stderr}"
     );
 }
+
+#[test]
+fn exr_post_applies_exposure_and_bloom_but_stays_linear() {
+    let dir = scratch();
+    let render = |name: &str, scene: &str, post: bool| {
+        let scene_path = path_in(&dir, &format!("{name}.toml"));
+        std::fs::write(&scene_path, scene).unwrap();
+        let out = path_in(&dir, &format!("{name}.exr"));
+        let mut c = blackhole();
+        c.args(["render", "--width", "64", "--height", "36", "--scene"])
+            .arg(&scene_path)
+            .arg("--out")
+            .arg(&out);
+        if post {
+            c.arg("--exr-post");
+        }
+        let (code, stdout, stderr) = run(c);
+        assert_clean(code, &stdout, &stderr);
+        image::open(&out).unwrap().to_rgba32f()
+    };
+    let plain = render("plain", "[post]\nexposure_ev = 1.0\n", false);
+    let exposed = render(
+        "exposed",
+        "[post]\nexposure_ev = 1.0\n[bloom]\nstrength = 0.0\n",
+        true,
+    );
+    // One stop: twice the radiance (f16 storage: 1e-3 relative).
+    for (a, b) in plain.pixels().zip(exposed.pixels()) {
+        for k in 0..3 {
+            assert!(
+                (2.0 * a[k] - b[k]).abs() <= 2e-3 * b[k].max(1e-2),
+                "{a:?} vs {b:?}"
+            );
+        }
+    }
+    // Not tone-mapped: values above 1 survive.
+    assert!(exposed.pixels().any(|p| p[0] > 1.0));
+    // Bloom adds light.
+    let bloomed = render(
+        "bloomed",
+        "[post]\nexposure_ev = 1.0\n[bloom]\nstrength = 1.0\nthreshold = 0.5\n",
+        true,
+    );
+    let sum = |img: &image::Rgba32FImage| {
+        img.pixels()
+            .map(|p| f64::from(p[0] + p[1] + p[2]))
+            .sum::<f64>()
+    };
+    assert!(sum(&bloomed) > 1.01 * sum(&exposed));
+    // And it is refused for PNG output.
+    let mut c = blackhole();
+    c.args(["render", "--exr-post", "--out"])
+        .arg(path_in(&dir, "x.png"));
+    let (code, _, stderr) = run(c);
+    assert_eq!(code, 2);
+    assert!(stderr.contains("--exr-post"), "{stderr}");
+}

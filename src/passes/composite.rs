@@ -14,6 +14,8 @@ use crate::vk::{Access, Descriptor, bind_compute, push_constants};
 /// 8-bit output format (sRGB-encoded values in a UNORM image: storage images
 /// cannot be SRGB).
 pub const LDR_FORMAT: vk::Format = vk::Format::R8G8B8A8_UNORM;
+/// Format of the linear composite (`--exr-post`).
+pub const HDR_POST_FORMAT: vk::Format = vk::Format::R16G16B16A16_SFLOAT;
 
 /// Push constants of `shaders/composite.comp`.
 #[repr(C)]
@@ -28,7 +30,8 @@ pub struct CompositePush {
 }
 
 /// Adds the composite of `hdr` (plus `bloom`, level 0, if given); returns the
-/// 8-bit image.
+/// 8-bit image, or with `linear` the bloomed, exposed linear HDR image (no
+/// tone map, no dither).
 pub fn add_composite<'a>(
     graph: &mut Graph<'a>,
     pipelines: &'a Pipelines,
@@ -36,9 +39,15 @@ pub fn add_composite<'a>(
     bloom: Option<&ImageHandle>,
     bloom_settings: &Bloom,
     post: &Post,
+    linear: bool,
 ) -> ImageHandle {
     let (width, height) = (hdr.desc.width, hdr.desc.height);
-    let mut ldr = graph.create_image("ldr", ImageDesc::new_2d(LDR_FORMAT, width, height));
+    let (name, format, pipeline) = if linear {
+        ("post hdr", HDR_POST_FORMAT, &pipelines.composite_hdr)
+    } else {
+        ("ldr", LDR_FORMAT, &pipelines.composite)
+    };
+    let mut ldr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
     let (input, output, blur) = (hdr.clone(), ldr.clone(), bloom.cloned());
     // The up chain sums every level into level 0: divide by their count so
     // `strength` means the same for any number of levels.
@@ -75,19 +84,14 @@ pub fn add_composite<'a>(
             bind_compute(
                 ctx.gpu,
                 ctx.cmd,
-                &pipelines.composite,
+                pipeline,
                 &[
                     Descriptor::SampledImage(ctx.full_view(&input), sampler),
                     Descriptor::StorageImage(ctx.view(&output, 0)),
                     Descriptor::SampledImage(bloom_view, sampler),
                 ],
             )?;
-            push_constants(
-                ctx.gpu,
-                ctx.cmd,
-                &pipelines.composite,
-                bytemuck::bytes_of(&push),
-            );
+            push_constants(ctx.gpu, ctx.cmd, pipeline, bytemuck::bytes_of(&push));
             // SAFETY: pipeline and descriptors bound on a recording buffer.
             unsafe {
                 ctx.gpu

@@ -26,6 +26,8 @@ pub struct Pipelines {
     /// Ray march writing the geodesic AOV, by [general or one hole].
     pub raymarch_aov: [ComputePipeline; 2],
     pub composite: ComputePipeline,
+    /// The composite without tone map, writing linear HDR (`--exr-post`).
+    pub composite_hdr: ComputePipeline,
     pub bloom_down: ComputePipeline,
     pub bloom_up: ComputePipeline,
     pub linear_clamp: Sampler,
@@ -50,16 +52,11 @@ impl Pipelines {
                 raymarch_pipeline(gpu, "raymarch aov", RAYMARCH_AOV, false, false)?,
                 raymarch_pipeline(gpu, "raymarch aov (one hole)", RAYMARCH_AOV, true, false)?,
             ],
-            composite: ComputePipeline::new(
+            composite: composite_pipeline(gpu, "composite", crate::shaders::COMPOSITE)?,
+            composite_hdr: composite_pipeline(
                 gpu,
-                "composite",
-                crate::shaders::COMPOSITE,
-                &[
-                    BindingKind::SampledImage,
-                    BindingKind::StorageImage,
-                    BindingKind::SampledImage,
-                ],
-                std::mem::size_of::<composite::CompositePush>() as u32,
+                "composite (HDR)",
+                crate::shaders::COMPOSITE_HDR,
             )?,
             bloom_down: ComputePipeline::new(
                 gpu,
@@ -93,6 +90,16 @@ fn raymarch_pipeline(
 ) -> Result<ComputePipeline> {
     let constants = [u32::from(one_hole), u32::from(volume)];
     ComputePipeline::with_constants(gpu, name, spirv, &RAYMARCH_BINDINGS, 0, &constants)
+}
+
+fn composite_pipeline(gpu: &Arc<Gpu>, name: &str, spirv: &[u8]) -> Result<ComputePipeline> {
+    let bindings = [
+        BindingKind::SampledImage,
+        BindingKind::StorageImage,
+        BindingKind::SampledImage,
+    ];
+    let push = std::mem::size_of::<composite::CompositePush>() as u32;
+    ComputePipeline::new(gpu, name, spirv, &bindings, push)
 }
 
 /// Workgroups to cover `n` items with groups of `size`.
