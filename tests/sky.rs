@@ -71,6 +71,30 @@ fn panorama_is_sampled_by_longitude_and_latitude() {
     let up = scene(sky, [0.0, 1.0, 0.0])
         .replace("vfov_deg = 20.0", "vfov_deg = 20.0\nup = [0.0, 0.0, 1.0]");
     assert_eq!(dominant(centre(&dir, "y", &up)), 2, "+y is blue");
+
+    // The same panorama as linear float data in OpenEXR, and as JPEG.
+    image::DynamicImage::ImageRgb8(pano.clone())
+        .to_rgba32f()
+        .save(path_in(&dir, "pano.exr"))
+        .unwrap();
+    let exr = "kind = \"image\"\nimage = \"pano.exr\"\n";
+    assert_eq!(
+        dominant(centre(&dir, "xe", &scene(exr, [1.0, 0.0, 0.0]))),
+        0,
+        "EXR: +x is red"
+    );
+    assert_eq!(
+        dominant(centre(&dir, "ze", &scene(exr, [0.0, 0.0, 1.0]))),
+        1,
+        "EXR: +z is green"
+    );
+    pano.save(path_in(&dir, "pano.jpg")).unwrap();
+    let jpg = "kind = \"image\"\nimage = \"pano.jpg\"\n";
+    assert_eq!(
+        dominant(centre(&dir, "xj", &scene(jpg, [1.0, 0.0, 0.0]))),
+        0,
+        "JPEG: +x is red"
+    );
 }
 
 #[test]
