@@ -10,10 +10,10 @@
 use ash::vk;
 use bytemuck::{Pod, Zeroable};
 
-use super::{Pipelines, groups};
+use super::{Pipelines, dispatch_2d};
 use crate::graph::{Graph, ImageHandle, Mips};
 use crate::scene::Bloom;
-use crate::vk::{Access, Descriptor, bind_compute, push_constants};
+use crate::vk::{Access, Descriptor};
 
 /// Format of the bloom chain.
 pub const BLOOM_FORMAT: vk::Format = vk::Format::R16G16B16A16_SFLOAT;
@@ -68,15 +68,6 @@ pub fn add_bloom<'a>(
             .read(hdr, Access::ComputeSampledRead, Mips::ALL)
             .write(&mut chain, Access::ComputeStorageWrite, Mips::one(0))
             .record(move |ctx| {
-                bind_compute(
-                    ctx.gpu,
-                    ctx.cmd,
-                    &pipelines.bloom_down,
-                    &[
-                        Descriptor::SampledImage(ctx.full_view(&src), sampler),
-                        Descriptor::StorageImage(ctx.view(&dst, 0)),
-                    ],
-                )?;
                 let push = BloomDownPush {
                     src_texel: texel,
                     dst_size: [w, h],
@@ -84,19 +75,17 @@ pub fn add_bloom<'a>(
                     knee,
                     first: 1,
                 };
-                push_constants(
-                    ctx.gpu,
-                    ctx.cmd,
+                dispatch_2d(
+                    ctx,
                     &pipelines.bloom_down,
+                    &[
+                        Descriptor::SampledImage(ctx.full_view(&src), sampler),
+                        Descriptor::StorageImage(ctx.view(&dst, 0)),
+                    ],
                     bytemuck::bytes_of(&push),
-                );
-                // SAFETY: pipeline and descriptors bound on a recording buffer.
-                unsafe {
-                    ctx.gpu
-                        .device
-                        .cmd_dispatch(ctx.cmd, groups(w, 8), groups(h, 8), 1)
-                };
-                Ok(())
+                    w,
+                    h,
+                )
             });
     }
 
@@ -111,15 +100,6 @@ pub fn add_bloom<'a>(
             .read(&read, Access::ComputeSampledRead, Mips::one(n))
             .write(&mut chain, Access::ComputeStorageWrite, Mips::one(n + 1))
             .record(move |ctx| {
-                bind_compute(
-                    ctx.gpu,
-                    ctx.cmd,
-                    &pipelines.bloom_down,
-                    &[
-                        Descriptor::SampledImage(ctx.view(&src, n), sampler),
-                        Descriptor::StorageImage(ctx.view(&dst, n + 1)),
-                    ],
-                )?;
                 let push = BloomDownPush {
                     src_texel: [1.0 / sw as f32, 1.0 / sh as f32],
                     dst_size: [w, h],
@@ -127,19 +107,17 @@ pub fn add_bloom<'a>(
                     knee: 0.0,
                     first: 0,
                 };
-                push_constants(
-                    ctx.gpu,
-                    ctx.cmd,
+                dispatch_2d(
+                    ctx,
                     &pipelines.bloom_down,
+                    &[
+                        Descriptor::SampledImage(ctx.view(&src, n), sampler),
+                        Descriptor::StorageImage(ctx.view(&dst, n + 1)),
+                    ],
                     bytemuck::bytes_of(&push),
-                );
-                // SAFETY: as above.
-                unsafe {
-                    ctx.gpu
-                        .device
-                        .cmd_dispatch(ctx.cmd, groups(w, 8), groups(h, 8), 1)
-                };
-                Ok(())
+                    w,
+                    h,
+                )
             });
     }
 
@@ -154,33 +132,22 @@ pub fn add_bloom<'a>(
             .read(&read, Access::ComputeSampledRead, Mips::one(n + 1))
             .write(&mut chain, Access::ComputeStorageReadWrite, Mips::one(n))
             .record(move |ctx| {
-                bind_compute(
-                    ctx.gpu,
-                    ctx.cmd,
-                    &pipelines.bloom_up,
-                    &[
-                        Descriptor::SampledImage(ctx.view(&src, n + 1), sampler),
-                        Descriptor::StorageImage(ctx.view(&dst, n)),
-                    ],
-                )?;
                 let push = BloomUpPush {
                     src_texel: [1.0 / sw as f32, 1.0 / sh as f32],
                     dst_size: [w, h],
                     radius,
                 };
-                push_constants(
-                    ctx.gpu,
-                    ctx.cmd,
+                dispatch_2d(
+                    ctx,
                     &pipelines.bloom_up,
+                    &[
+                        Descriptor::SampledImage(ctx.view(&src, n + 1), sampler),
+                        Descriptor::StorageImage(ctx.view(&dst, n)),
+                    ],
                     bytemuck::bytes_of(&push),
-                );
-                // SAFETY: as above.
-                unsafe {
-                    ctx.gpu
-                        .device
-                        .cmd_dispatch(ctx.cmd, groups(w, 8), groups(h, 8), 1)
-                };
-                Ok(())
+                    w,
+                    h,
+                )
             });
     }
     Some(chain)

@@ -6,10 +6,10 @@
 use ash::vk;
 use bytemuck::{Pod, Zeroable};
 
-use super::{Pipelines, groups};
+use super::{Pipelines, dispatch_2d};
 use crate::graph::{Graph, ImageDesc, ImageHandle, Mips};
 use crate::scene::{Bloom, Post, Tonemap};
-use crate::vk::{Access, Descriptor, bind_compute, push_constants};
+use crate::vk::{Access, Descriptor};
 
 /// 8-bit output format (sRGB-encoded values in a UNORM image: storage images
 /// cannot be SRGB).
@@ -81,24 +81,18 @@ pub fn add_composite<'a>(
                 Some(b) => ctx.view(b, 0),
                 None => ctx.full_view(&input),
             };
-            bind_compute(
-                ctx.gpu,
-                ctx.cmd,
+            dispatch_2d(
+                ctx,
                 pipeline,
                 &[
                     Descriptor::SampledImage(ctx.full_view(&input), sampler),
                     Descriptor::StorageImage(ctx.view(&output, 0)),
                     Descriptor::SampledImage(bloom_view, sampler),
                 ],
-            )?;
-            push_constants(ctx.gpu, ctx.cmd, pipeline, bytemuck::bytes_of(&push));
-            // SAFETY: pipeline and descriptors bound on a recording buffer.
-            unsafe {
-                ctx.gpu
-                    .device
-                    .cmd_dispatch(ctx.cmd, groups(width, 8), groups(height, 8), 1)
-            };
-            Ok(())
+                bytemuck::bytes_of(&push),
+                width,
+                height,
+            )
         });
     ldr
 }

@@ -102,6 +102,29 @@ fn composite_pipeline(gpu: &Arc<Gpu>, name: &str, spirv: &[u8]) -> Result<Comput
     ComputePipeline::new(gpu, name, spirv, &bindings, push)
 }
 
+/// Binds `pipeline` with `descriptors`, pushes `push` (if any) and dispatches
+/// 8x8 workgroups over `width` x `height`: what every compute pass records.
+pub(crate) fn dispatch_2d(
+    ctx: &crate::graph::PassContext<'_>,
+    pipeline: &ComputePipeline,
+    descriptors: &[crate::vk::Descriptor],
+    push: &[u8],
+    width: u32,
+    height: u32,
+) -> Result<()> {
+    crate::vk::bind_compute(ctx.gpu, ctx.cmd, pipeline, descriptors)?;
+    if !push.is_empty() {
+        crate::vk::push_constants(ctx.gpu, ctx.cmd, pipeline, push);
+    }
+    // SAFETY: the pipeline and its descriptors are bound on a recording buffer.
+    unsafe {
+        ctx.gpu
+            .device
+            .cmd_dispatch(ctx.cmd, groups(width, 8), groups(height, 8), 1)
+    };
+    Ok(())
+}
+
 /// Workgroups to cover `n` items with groups of `size`.
 pub(crate) fn groups(n: u32, size: u32) -> u32 {
     n.div_ceil(size)

@@ -10,10 +10,10 @@
 use ash::vk;
 use bytemuck::{Pod, Zeroable};
 
-use super::{Pipelines, groups};
+use super::{Pipelines, dispatch_2d};
 use crate::graph::{Graph, ImageHandle, Mips};
 use crate::scene::{DiskKind, MAX_HOLES, Scene, SkyKind, VolumeColor};
-use crate::vk::{Access, Descriptor, bind_compute};
+use crate::vk::{Access, Descriptor};
 
 /// HDR format written by the ray march.
 pub const HDR_FORMAT: vk::Format = vk::Format::R16G16B16A16_SFLOAT;
@@ -201,9 +201,8 @@ pub fn add_raymarch<'a>(
     }
     pass.write(&mut hdr, Access::ComputeStorageWrite, Mips::ALL)
         .record(move |ctx| {
-            bind_compute(
-                ctx.gpu,
-                ctx.cmd,
+            dispatch_2d(
+                ctx,
                 pipeline,
                 &[
                     Descriptor::StorageImage(ctx.view(&out, 0)),
@@ -214,14 +213,10 @@ pub fn add_raymarch<'a>(
                         pipelines.sky_sampler.sampler,
                     ),
                 ],
-            )?;
-            // SAFETY: the pipeline and its descriptors are bound on a recording buffer.
-            unsafe {
-                ctx.gpu
-                    .device
-                    .cmd_dispatch(ctx.cmd, groups(width, 8), groups(height, 8), 1)
-            };
-            Ok(())
+                &[],
+                width,
+                height,
+            )
         });
     hdr
 }
