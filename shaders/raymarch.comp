@@ -25,8 +25,6 @@ layout(binding = 0, rgba16f) uniform writeonly image2D out_img;
 // Linear sRGB colour of luminance 1 per blackbody temperature, log-spaced
 // from LUT_MIN_K to LUT_MAX_K (src/physics/blackbody.rs).
 layout(binding = 2) uniform sampler2D disk_lut;
-const float LUT_MIN_K = 500.0;
-const float LUT_MAX_K = 100000.0;
 
 // Luminance-1 linear sRGB colour of a blackbody at t kelvin.
 vec3 blackbody(float t) {

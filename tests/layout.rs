@@ -1,5 +1,6 @@
-//! Structs shared with GLSL: the Rust side's field offsets must equal the
-//! offsets the shader compiler assigned, read from the SPIR-V itself.
+//! Structs and constants shared with GLSL: the Rust side's field offsets must
+//! equal the offsets the shader compiler assigned, read from the SPIR-V
+//! itself, and the constants mirrored in Rust must equal the GLSL source's.
 
 use std::mem::{offset_of, size_of};
 
@@ -98,4 +99,66 @@ fn composite_push_constants_match_the_glsl_block() {
     .map(|&o| o as u32)
     .collect();
     assert_eq!(glsl, rust);
+}
+
+/// `#define NAME VALUE` lines of a GLSL source, as (name, value) text.
+fn defines(src: &str) -> Vec<(String, String)> {
+    src.lines()
+        .filter_map(|l| l.trim().strip_prefix("#define "))
+        .filter_map(|rest| {
+            let mut it = rest.split_whitespace();
+            Some((it.next()?.to_string(), it.next()?.to_string()))
+        })
+        .collect()
+}
+
+fn define(src: &str, name: &str) -> f64 {
+    let all = defines(src);
+    let (_, v) = all
+        .iter()
+        .find(|(n, _)| n == name)
+        .unwrap_or_else(|| panic!("#define {name} missing"));
+    v.parse()
+        .unwrap_or_else(|_| panic!("#define {name} {v} is not a number"))
+}
+
+#[test]
+fn constants_mirrored_in_rust_match_the_glsl_source() {
+    use blackhole::passes::composite::glsl as c;
+    use blackhole::passes::raymarch::glsl as r;
+    let params = include_str!("../shaders/include/params.glsl");
+    let pairs = [
+        ("MAX_HOLES", f64::from(r::MAX_HOLES)),
+        ("DISK_NONE", f64::from(r::DISK_NONE)),
+        ("DISK_THIN", f64::from(r::DISK_THIN)),
+        ("DISK_VOLUME", f64::from(r::DISK_VOLUME)),
+        ("SKY_BLACK", f64::from(r::SKY_BLACK)),
+        ("SKY_CHECKER", f64::from(r::SKY_CHECKER)),
+        ("SKY_STARS", f64::from(r::SKY_STARS)),
+        ("SKY_IMAGE", f64::from(r::SKY_IMAGE)),
+        ("LUT_MIN_K", r::LUT_MIN_K),
+        ("LUT_MAX_K", r::LUT_MAX_K),
+    ];
+    for (name, rust) in pairs {
+        assert_eq!(define(params, name), rust, "{name}");
+    }
+    assert_eq!(r::MAX_HOLES as usize, blackhole::scene::MAX_HOLES);
+    let composite = include_str!("../shaders/composite.comp");
+    for (name, rust) in [
+        ("TONEMAP_ACES_HILL", c::TONEMAP_ACES_HILL),
+        ("TONEMAP_ACES_NARKOWICZ", c::TONEMAP_ACES_NARKOWICZ),
+        ("TONEMAP_LINEAR", c::TONEMAP_LINEAR),
+    ] {
+        assert_eq!(define(composite, name), f64::from(rust), "{name}");
+    }
+    // The AOV's outcome codes are binding (DESIGN.md section 4).
+    let raymarch = include_str!("../shaders/raymarch.comp");
+    for (name, code) in [
+        ("OUT_ESCAPED", 0.0),
+        ("OUT_CAPTURED", 1.0),
+        ("OUT_DISK", 2.0),
+        ("OUT_NO_STEPS", 3.0),
+    ] {
+        assert_eq!(define(raymarch, name), code, "{name}");
+    }
 }

@@ -16,6 +16,10 @@
 #define SKY_STARS 2
 #define SKY_IMAGE 3
 
+// Temperature range of the blackbody table (log-spaced), kelvin.
+#define LUT_MIN_K 500.0
+#define LUT_MAX_K 100000.0
+
 layout(std140, binding = 1) uniform RaymarchParams {
     vec4 cam_pos;      // xyz: camera position; w: tan(vfov / 2)
     vec4 cam_right;    // xyz: right;           w: aspect (W / H)

@@ -17,6 +17,14 @@ pub const LDR_FORMAT: vk::Format = vk::Format::R8G8B8A8_UNORM;
 /// Format of the linear composite (`--exr-post`).
 pub const HDR_POST_FORMAT: vk::Format = vk::Format::R16G16B16A16_SFLOAT;
 
+/// Tone-map codes mirrored from `shaders/composite.comp` (tests/layout.rs
+/// checks them against the GLSL source).
+pub mod glsl {
+    pub const TONEMAP_ACES_HILL: u32 = 0;
+    pub const TONEMAP_ACES_NARKOWICZ: u32 = 1;
+    pub const TONEMAP_LINEAR: u32 = 2;
+}
+
 /// Push constants of `shaders/composite.comp`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
@@ -61,9 +69,9 @@ pub fn add_composite<'a>(
         height,
         bloom_strength,
         tonemap: match post.tonemap {
-            Tonemap::AcesHill => 0,
-            Tonemap::AcesNarkowicz => 1,
-            Tonemap::Linear => 2,
+            Tonemap::AcesHill => glsl::TONEMAP_ACES_HILL,
+            Tonemap::AcesNarkowicz => glsl::TONEMAP_ACES_NARKOWICZ,
+            Tonemap::Linear => glsl::TONEMAP_LINEAR,
         },
         dither: if post.dither { 1.0 } else { 0.0 },
     };

@@ -15,6 +15,21 @@ use crate::graph::{Graph, ImageHandle, Mips};
 use crate::scene::{DiskKind, MAX_HOLES, Scene, SkyKind, VolumeColor};
 use crate::vk::{Access, Descriptor};
 
+/// Constants mirrored from `shaders/include/params.glsl` (tests/layout.rs
+/// checks them against the GLSL source).
+pub mod glsl {
+    pub const MAX_HOLES: u32 = 8;
+    pub const DISK_NONE: u32 = 0;
+    pub const DISK_THIN: u32 = 1;
+    pub const DISK_VOLUME: u32 = 2;
+    pub const SKY_BLACK: u32 = 0;
+    pub const SKY_CHECKER: u32 = 1;
+    pub const SKY_STARS: u32 = 2;
+    pub const SKY_IMAGE: u32 = 3;
+    pub const LUT_MIN_K: f64 = crate::physics::blackbody::LUT_MIN_K;
+    pub const LUT_MAX_K: f64 = crate::physics::blackbody::LUT_MAX_K;
+}
+
 /// HDR format written by the ray march.
 pub const HDR_FORMAT: vk::Format = vk::Format::R16G16B16A16_SFLOAT;
 /// Format of the geodesic AOV (full f32: directions to 1e-7).
@@ -81,11 +96,11 @@ impl RaymarchParams {
         for (slot, h) in holes.iter_mut().zip(&scene.black_holes) {
             *slot = v4(glam::DVec3::from(h.position), h.rs);
         }
-        let disk_kind = match scene.disk.kind {
-            DiskKind::None => 0.0,
-            DiskKind::Thin => 1.0,
-            DiskKind::Volumetric => 2.0,
-        };
+        let disk_kind = f64::from(match scene.disk.kind {
+            DiskKind::None => glsl::DISK_NONE,
+            DiskKind::Thin => glsl::DISK_THIN,
+            DiskKind::Volumetric => glsl::DISK_VOLUME,
+        });
         let d = &scene.disk;
         let plane_n = glam::DVec3::from(scene.plane.normal).normalize();
         // An in-plane axis: world x projected, or z if the normal is along x.
@@ -95,11 +110,13 @@ impl RaymarchParams {
         }
         let plane_u = plane_u.normalize();
         let (sky_kind, sky_param) = match scene.sky.kind {
-            SkyKind::Black => (0.0, 0.0),
-            SkyKind::Checker => (1.0, f64::from(scene.sky.squares)),
-            SkyKind::Stars => (2.0, scene.sky.star_density),
-            SkyKind::Image | SkyKind::Cubemap => (3.0, 0.0),
+            SkyKind::Black => (glsl::SKY_BLACK, 0.0),
+            SkyKind::Checker => (glsl::SKY_CHECKER, f64::from(scene.sky.squares)),
+            SkyKind::Stars => (glsl::SKY_STARS, scene.sky.star_density),
+            // The image's width (for the mip level) is filled in by the renderer.
+            SkyKind::Image | SkyKind::Cubemap => (glsl::SKY_IMAGE, 0.0),
         };
+        let sky_kind = sky_kind as f32;
         let (e1, e2) = crate::physics::geodesic::disk_basis(glam::DVec3::from(scene.disk.normal));
         RaymarchParams {
             cam_pos: v4(f.position, f.tan_half_fov),

@@ -129,40 +129,32 @@ pub struct Sampler {
 }
 
 impl Sampler {
-    /// Linear filtering, clamp to edge, all mips.
+    /// Linear filtering with mips, clamped at every edge.
     pub fn linear_clamp(gpu: &Arc<Gpu>) -> Result<Self> {
-        let info = vk::SamplerCreateInfo::default()
-            .mag_filter(vk::Filter::LINEAR)
-            .min_filter(vk::Filter::LINEAR)
-            .mipmap_mode(vk::SamplerMipmapMode::LINEAR)
-            .address_mode_u(vk::SamplerAddressMode::CLAMP_TO_EDGE)
-            .address_mode_v(vk::SamplerAddressMode::CLAMP_TO_EDGE)
-            .address_mode_w(vk::SamplerAddressMode::CLAMP_TO_EDGE)
-            .max_lod(vk::LOD_CLAMP_NONE);
-        // SAFETY: valid device.
-        let sampler = unsafe { gpu.device.create_sampler(&info, None) }
-            .ctx(|| "creating the linear sampler".into())?;
-        Ok(Sampler {
-            gpu: gpu.clone(),
-            sampler,
-        })
+        Self::linear(
+            gpu,
+            "the linear sampler",
+            vk::SamplerAddressMode::CLAMP_TO_EDGE,
+        )
     }
-}
 
-impl Sampler {
     /// Linear filtering with mips, repeating in u (longitude), clamped in v.
     pub fn linear_repeat_u(gpu: &Arc<Gpu>) -> Result<Self> {
+        Self::linear(gpu, "the sky sampler", vk::SamplerAddressMode::REPEAT)
+    }
+
+    fn linear(gpu: &Arc<Gpu>, what: &str, address_u: vk::SamplerAddressMode) -> Result<Self> {
         let info = vk::SamplerCreateInfo::default()
             .mag_filter(vk::Filter::LINEAR)
             .min_filter(vk::Filter::LINEAR)
             .mipmap_mode(vk::SamplerMipmapMode::LINEAR)
-            .address_mode_u(vk::SamplerAddressMode::REPEAT)
+            .address_mode_u(address_u)
             .address_mode_v(vk::SamplerAddressMode::CLAMP_TO_EDGE)
             .address_mode_w(vk::SamplerAddressMode::CLAMP_TO_EDGE)
             .max_lod(vk::LOD_CLAMP_NONE);
         // SAFETY: valid device.
-        let sampler = unsafe { gpu.device.create_sampler(&info, None) }
-            .ctx(|| "creating the sky sampler".into())?;
+        let sampler =
+            unsafe { gpu.device.create_sampler(&info, None) }.ctx(|| format!("creating {what}"))?;
         Ok(Sampler {
             gpu: gpu.clone(),
             sampler,
