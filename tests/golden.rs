@@ -9,7 +9,7 @@ mod common;
 
 use std::path::PathBuf;
 
-use common::{assert_clean, blackhole, path_in, run, scratch};
+use common::{SceneSrc, render_png, scratch};
 
 const W: u32 = 160;
 const H: u32 = 90;
@@ -28,22 +28,7 @@ fn presets_match_their_golden_images() {
     let bless = std::env::var("BLACKHOLE_BLESS").is_ok_and(|v| v == "1");
     let mut failures = Vec::new();
     for (name, _, _) in blackhole::scene::PRESETS {
-        let out = path_in(&dir, &format!("{name}.png"));
-        let mut c = blackhole();
-        c.args([
-            "render",
-            "--width",
-            &W.to_string(),
-            "--height",
-            &H.to_string(),
-            "--scene",
-            name,
-            "--out",
-        ])
-        .arg(&out);
-        let (code, stdout, stderr) = run(c);
-        assert_clean(code, &stdout, &stderr);
-        let actual = image::open(&out).expect("PNG written").to_rgb8();
+        let actual = render_png(&dir, name, SceneSrc::Preset(name), W, H);
         let golden_path = golden_dir().join(format!("{name}.png"));
         if bless {
             std::fs::create_dir_all(golden_dir()).unwrap();
@@ -83,24 +68,13 @@ fn presets_match_their_golden_images() {
 #[test]
 fn the_metric_rejects_a_different_image() {
     let dir = scratch();
-    let scene = path_in(&dir, "moved.toml");
-    std::fs::write(&scene, "[camera]\nposition = [0.0, 3.0, -15.0]\n").unwrap();
-    let out = path_in(&dir, "moved.png");
-    let mut c = blackhole();
-    c.args([
-        "render",
-        "--width",
-        &W.to_string(),
-        "--height",
-        &H.to_string(),
-        "--scene",
-    ])
-    .arg(&scene)
-    .arg("--out")
-    .arg(&out);
-    let (code, stdout, stderr) = run(c);
-    assert_clean(code, &stdout, &stderr);
-    let actual = image::open(&out).unwrap().to_rgb8();
+    let actual = render_png(
+        &dir,
+        "moved",
+        SceneSrc::Toml("[camera]\nposition = [0.0, 3.0, -15.0]\n"),
+        W,
+        H,
+    );
     let Ok(golden) = image::open(golden_dir().join("default.png")) else {
         panic!("tests/golden/default.png missing; bless the goldens first");
     };

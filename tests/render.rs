@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{assert_clean, blackhole, path_in, run, scratch};
+use common::{SceneSrc, assert_clean, blackhole, path_in, render_png, run, scratch};
 
 fn luma(p: &image::Rgb<u8>) -> f32 {
     0.2126 * f32::from(p[0]) + 0.7152 * f32::from(p[1]) + 0.0722 * f32::from(p[2])
@@ -166,17 +166,7 @@ fn no_vulkan_driver_is_one_sentence_naming_the_package() {
 }
 
 fn render_small(dir: &tempfile::TempDir, name: &str, scene: &str) -> image::RgbImage {
-    let scene_path = path_in(dir, &format!("{name}.toml"));
-    std::fs::write(&scene_path, scene).unwrap();
-    let out = path_in(dir, &format!("{name}.png"));
-    let mut c = blackhole();
-    c.args(["render", "--width", "160", "--height", "90", "--scene"])
-        .arg(&scene_path)
-        .arg("--out")
-        .arg(&out);
-    let (code, stdout, stderr) = run(c);
-    assert_clean(code, &stdout, &stderr);
-    image::open(&out).expect("PNG written").to_rgb8()
+    render_png(dir, name, SceneSrc::Toml(scene), 160, 90)
 }
 
 #[test]

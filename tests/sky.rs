@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{assert_clean, blackhole, path_in, run, scratch};
+use common::{SceneSrc, blackhole, path_in, render_png, run, scratch};
 
 /// A scene with gravity off and the hole far away, camera at the origin
 /// looking along `look`, so each pixel sees the sky in its own direction.
@@ -18,17 +18,7 @@ fn scene(sky: &str, look: [f64; 3]) -> String {
 }
 
 fn centre(dir: &tempfile::TempDir, name: &str, toml: &str) -> image::Rgb<u8> {
-    let path = path_in(dir, &format!("{name}.toml"));
-    std::fs::write(&path, toml).unwrap();
-    let out = path_in(dir, &format!("{name}.png"));
-    let mut c = blackhole();
-    c.args(["render", "--width", "33", "--height", "33", "--scene"])
-        .arg(&path)
-        .arg("--out")
-        .arg(&out);
-    let (code, stdout, stderr) = run(c);
-    assert_clean(code, &stdout, &stderr);
-    *image::open(&out).unwrap().to_rgb8().get_pixel(16, 16)
+    *render_png(dir, name, SceneSrc::Toml(toml), 33, 33).get_pixel(16, 16)
 }
 
 fn dominant(p: image::Rgb<u8>) -> usize {

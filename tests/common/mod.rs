@@ -56,3 +56,44 @@ pub fn scratch() -> tempfile::TempDir {
 pub fn path_in(dir: &tempfile::TempDir, name: &str) -> PathBuf {
     dir.path().join(name)
 }
+
+/// Where a test's scene comes from.
+pub enum SceneSrc<'a> {
+    /// A built-in preset, by name.
+    Preset(&'a str),
+    /// TOML text, written to `NAME.toml` in the scratch folder.
+    Toml(&'a str),
+}
+
+/// Renders `scene` at `width` x `height` to `NAME.png` in `dir`, requiring a
+/// clean, validation-silent run; returns the image.
+pub fn render_png(
+    dir: &tempfile::TempDir,
+    name: &str,
+    scene: SceneSrc<'_>,
+    width: u32,
+    height: u32,
+) -> image::RgbImage {
+    let scene_arg = match scene {
+        SceneSrc::Preset(p) => p.to_string(),
+        SceneSrc::Toml(text) => {
+            let path = path_in(dir, &format!("{name}.toml"));
+            std::fs::write(&path, text).expect("writing the test scene");
+            path.display().to_string()
+        }
+    };
+    let out = path_in(dir, &format!("{name}.png"));
+    let mut c = blackhole();
+    c.args([
+        "render",
+        "--width",
+        &width.to_string(),
+        "--height",
+        &height.to_string(),
+    ])
+    .args(["--scene", &scene_arg, "--out"])
+    .arg(&out);
+    let (code, stdout, stderr) = run(c);
+    assert_clean(code, &stdout, &stderr);
+    image::open(&out).expect("PNG written").to_rgb8()
+}
