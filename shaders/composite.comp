@@ -64,9 +64,13 @@ float hash(uvec2 p, uint salt) {
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     if (px.x >= int(pc.width) || px.y >= int(pc.height)) return;
-    vec3 c = texelFetch(hdr, px, 0).rgb;
+    vec2 uv = (vec2(px) + 0.5) / vec2(pc.width, pc.height);
+    // The ray march may run at a fraction of the output size (the window's
+    // render scale): then it is upscaled here, bilinearly.
+    vec3 c = textureSize(hdr, 0) == ivec2(pc.width, pc.height)
+        ? texelFetch(hdr, px, 0).rgb
+        : textureLod(hdr, uv, 0.0).rgb;
     if (pc.bloom_strength > 0.0) {
-        vec2 uv = (vec2(px) + 0.5) / vec2(pc.width, pc.height);
         c += pc.bloom_strength * textureLod(bloom, uv, 0.0).rgb;
     }
     c *= pc.exposure;

@@ -17,7 +17,7 @@ layout(constant_id = 1) const bool VOLUME = false;
 #include "geodesic.glsl"
 
 #ifdef GEODESIC_AOV
-// The geodesic AOV (DESIGN.md section 4): where each ray went.
+// The geodesic AOV (the geodesic AOV table in the README): where each ray went.
 layout(binding = 0, rgba32f) uniform writeonly image2D out_img;
 #else
 layout(binding = 0, rgba16f) uniform writeonly image2D out_img;
@@ -39,7 +39,7 @@ layout(binding = 3) uniform sampler2D sky_tex;
 #include "sky.glsl"
 
 // Light of the thin disk at radius r whose light reaches us shifted by g_full
-// (DESIGN.md section 2): Novikov-Thorne temperature T(r), observed temperature
+// (the conventions in the README, "Physics"): Novikov-Thorne temperature T(r), observed temperature
 // g T coloured by the blackbody table, observed bolometric intensity g^4 times
 // the emitted T^4. The switches pick which parts of g apply: the gravitational
 // part sqrt(1 - rs/r), the kinematic (Doppler) rest, both, or neither.
@@ -129,7 +129,7 @@ vec3 plane_crossing(vec3 x0, vec3 v0, vec3 x1, vec3 v1, float h) {
 }
 
 // Redshift g = nu_obs / nu_emit of light from a Keplerian emitter at p for a
-// photon moving along -v (DESIGN.md section 2): g = sqrt(1 - 1.5 rs / r) /
+// photon moving along -v (the conventions in the README, "Physics"): g = sqrt(1 - 1.5 rs / r) /
 // (1 - Omega lambda), lambda = L / E from the conserved angular momentum
 // x cross x' and the asymptotic speed |x'|^2 - rs h^2 / r^3.
 float disk_redshift(vec3 p, vec3 x, vec3 v) {
@@ -363,10 +363,12 @@ void main() {
     uint w = P.counts.y, hgt = P.counts.z;
     if (px.x >= w || px.y >= hgt) return;
 
-    // Binding camera convention (DESIGN.md section 2).
+    // Binding camera convention (the conventions in the README, "Physics").
     float tan_half = P.cam_pos.w, aspect = P.cam_right.w;
-    float sx = (2.0 * (float(px.x) + 0.5) / float(w) - 1.0) * tan_half * aspect;
-    float sy = (1.0 - 2.0 * (float(px.y) + 0.5) / float(hgt)) * tan_half;
+    // Sub-pixel jitter (cam_up.w, cam_fwd.w; 0 = the pixel centre) for
+    // accumulated anti-aliasing in the window.
+    float sx = (2.0 * (float(px.x) + 0.5 + P.cam_up.w) / float(w) - 1.0) * tan_half * aspect;
+    float sy = (1.0 - 2.0 * (float(px.y) + 0.5 + P.cam_fwd.w) / float(hgt)) * tan_half;
     vec3 dir = normalize(P.cam_fwd.xyz + sx * P.cam_right.xyz + sy * P.cam_up.xyz);
 
     volume_jitter = hash33(uvec3(px, 7u)).x;

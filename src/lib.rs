@@ -13,21 +13,20 @@
 )]
 #![allow(clippy::too_many_arguments)]
 
+pub mod cli;
 pub mod error;
+pub mod frame;
 pub mod graph;
 pub mod output;
 pub mod passes;
 pub mod physics;
-pub mod profile;
-pub mod renderer;
+pub mod render;
 pub mod scene;
 pub mod shaders;
 pub mod sky;
-pub mod trace_plot;
 pub mod vk;
 
 pub use error::{Error, Result};
-pub use renderer::{
-    Frame, FrameTimings, OutputKind, PassTiming, Pixels, Renderer, RendererOptions,
-};
+pub use frame::{Frame, FrameTimings, OutputKind, PassTiming, Pixels};
+pub use render::{Renderer, RendererOptions};
 pub use scene::Scene;

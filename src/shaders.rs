@@ -13,3 +13,5 @@ pub const BLOOM_UP: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/bloom_up.c
 /// The composite writing linear HDR (`composite.comp` with `HDR_OUTPUT`).
 pub const COMPOSITE_HDR: &[u8] =
     include_bytes!(concat!(env!("OUT_DIR"), "/composite_hdr.comp.spv"));
+/// Progressive accumulation of jittered frames (`shaders/accumulate.comp`).
+pub const ACCUMULATE: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/accumulate.comp.spv"));

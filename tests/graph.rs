@@ -298,7 +298,10 @@ fn readback_buffer_is_made_visible_to_the_host() {
     assert_eq!(c.before[1].images[0].new_layout, L::TRANSFER_SRC_OPTIMAL);
     assert_eq!(c.after.buffers.len(), 1);
     let b = c.after.buffers[0];
-    assert_eq!((b.src_stage, b.src_access), (S::COPY, A::TRANSFER_WRITE));
+    assert_eq!(
+        (b.src_stage, b.src_access),
+        (S::ALL_TRANSFER, A::TRANSFER_WRITE)
+    );
     assert_eq!((b.dst_stage, b.dst_access), (S::HOST, A::HOST_READ));
 }
 
@@ -362,4 +365,304 @@ fn relative_images_follow_the_output_size() {
         (tiny.desc.width, tiny.desc.height, tiny.desc.mip_levels),
         (1, 1, 1)
     );
+}
+
+/// Whether every bit of `access` can be performed by some stage in `stage`
+/// (the rule behind VUID-VkImageMemoryBarrier2-srcAccessMask-03914 and its
+/// siblings): a source access mask must name accesses its stages perform.
+fn access_supported_by(stage: vk::PipelineStageFlags2, access: vk::AccessFlags2) -> bool {
+    let pairs: [(A, S); 9] = [
+        (
+            A::TRANSFER_READ | A::TRANSFER_WRITE,
+            S::ALL_TRANSFER | S::COPY | S::BLIT,
+        ),
+        (
+            A::SHADER_STORAGE_WRITE | A::SHADER_STORAGE_READ | A::SHADER_SAMPLED_READ,
+            S::COMPUTE_SHADER | S::FRAGMENT_SHADER,
+        ),
+        (A::UNIFORM_READ, S::COMPUTE_SHADER | S::FRAGMENT_SHADER),
+        (
+            A::COLOR_ATTACHMENT_WRITE | A::COLOR_ATTACHMENT_READ,
+            S::COLOR_ATTACHMENT_OUTPUT,
+        ),
+        (A::HOST_READ | A::HOST_WRITE, S::HOST),
+        (A::NONE, S::NONE),
+        (A::NONE, S::NONE),
+        (A::NONE, S::NONE),
+        (A::NONE, S::NONE),
+    ];
+    let mut left = access;
+    for (a, s) in pairs {
+        if stage.intersects(s) {
+            left &= !a;
+        }
+    }
+    left.is_empty()
+}
+
+fn assert_sources_valid(c: &blackhole::graph::Compiled) {
+    for (i, b) in c.before.iter().chain(std::iter::once(&c.after)).enumerate() {
+        for ib in &b.images {
+            assert!(
+                access_supported_by(ib.src_stage, ib.src_access),
+                "barrier {i}: src access {:?} not performed by src stage {:?}",
+                ib.src_access,
+                ib.src_stage
+            );
+        }
+        for bb in &b.buffers {
+            assert!(
+                access_supported_by(bb.src_stage, bb.src_access),
+                "barrier {i}: src access {:?} not performed by src stage {:?}",
+                bb.src_access,
+                bb.src_stage
+            );
+        }
+    }
+}
+
+/// Writes `img` with `first`, reads it in compute (a layout change), then in
+/// a fragment shader; returns the compiled graph.
+fn write_then_compute_then_fragment(first: Access) -> blackhole::graph::Compiled {
+    let mut g = Graph::new(64, 64);
+    let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 64, 64));
+    let mut out = g.import_buffer(
+        "out",
+        fake_buffer(),
+        Access::Nothing,
+        Some(Access::HostRead),
+    );
+    let mut out2 = g.import_image(
+        "target",
+        ImageDesc::new_2d(FMT, 64, 64),
+        fake_image(1),
+        Access::Nothing,
+        Some(Access::TransferRead),
+    );
+    g.add_pass("write").write(&mut img, first, Mips::ALL);
+    g.add_pass("compute read")
+        .read(&img, Access::ComputeSampledRead, Mips::ALL)
+        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    g.add_pass("fragment read")
+        .read(&img, Access::FragmentSampledRead, Mips::ALL)
+        .write(&mut out2, Access::ColorAttachmentWrite, Mips::ALL);
+    g.compile().unwrap()
+}
+
+fn check_fragment_read_after_layout_changing_compute_read(first: Access) {
+    let c = write_then_compute_then_fragment(first);
+    assert_eq!(c.order, vec![0, 1, 2]);
+    assert_sources_valid(&c);
+    let w = first.info();
+    // The compute read flushes the write and changes the layout.
+    let b = &c.before[1].images;
+    assert_eq!(b.len(), 1);
+    assert_eq!((b[0].src_stage, b[0].src_access), (w.stage, w.access));
+    assert_eq!(b[0].new_layout, L::SHADER_READ_ONLY_OPTIMAL);
+    // The fragment read chains from the compute stage (which the transition
+    // came before) and only needs visibility: the write is already available.
+    let f: Vec<_> = c.before[2].images.iter().filter(|b| b.image == 0).collect();
+    assert_eq!(f.len(), 1);
+    assert!(f[0].src_stage.contains(S::COMPUTE_SHADER));
+    assert_eq!(f[0].src_access, A::NONE);
+    assert_eq!(
+        (f[0].dst_stage, f[0].dst_access),
+        (S::FRAGMENT_SHADER, A::SHADER_SAMPLED_READ)
+    );
+    assert_eq!(f[0].old_layout, f[0].new_layout);
+}
+
+#[test]
+fn transfer_write_then_compute_read_then_fragment_read_chains_without_a_stale_source_access() {
+    check_fragment_read_after_layout_changing_compute_read(Access::TransferWrite);
+}
+
+#[test]
+fn colour_attachment_write_then_compute_read_then_fragment_read_chains_without_a_stale_source_access()
+ {
+    check_fragment_read_after_layout_changing_compute_read(Access::ColorAttachmentWrite);
+}
+
+#[test]
+fn compute_write_of_a_buffer_then_uniform_read_makes_the_write_visible_to_uniform_reads() {
+    let mut g = Graph::new(8, 8);
+    let mut buf = g.import_buffer("params", fake_buffer(), Access::Nothing, None);
+    let mut out = g.import_buffer(
+        "out",
+        fake_buffer(),
+        Access::Nothing,
+        Some(Access::HostRead),
+    );
+    g.add_pass("write")
+        .write_buffer(&mut buf, Access::ComputeStorageWrite);
+    g.add_pass("read")
+        .read_buffer(&buf, Access::ComputeUniformRead)
+        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    let c = g.compile().unwrap();
+    assert_eq!(c.order, vec![0, 1]);
+    assert_sources_valid(&c);
+    let b: Vec<_> = c.before[1]
+        .buffers
+        .iter()
+        .filter(|b| b.buffer == 0)
+        .collect();
+    assert_eq!(b.len(), 1);
+    assert_eq!(
+        (b[0].src_stage, b[0].src_access),
+        (S::COMPUTE_SHADER, A::SHADER_STORAGE_WRITE)
+    );
+    assert_eq!(
+        (b[0].dst_stage, b[0].dst_access),
+        (S::COMPUTE_SHADER, A::UNIFORM_READ)
+    );
+}
+
+#[test]
+fn host_written_parameters_are_made_visible_to_the_uniform_read() {
+    let mut g = Graph::new(8, 8);
+    let params = g.import_buffer("params", fake_buffer(), Access::HostWrite, None);
+    let mut out = g.import_buffer(
+        "out",
+        fake_buffer(),
+        Access::Nothing,
+        Some(Access::HostRead),
+    );
+    g.add_pass("read")
+        .read_buffer(&params, Access::ComputeUniformRead)
+        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    let c = g.compile().unwrap();
+    assert_sources_valid(&c);
+    let b: Vec<_> = c.before[0]
+        .buffers
+        .iter()
+        .filter(|b| b.buffer == 0)
+        .collect();
+    assert_eq!(b.len(), 1);
+    assert_eq!((b[0].src_stage, b[0].src_access), (S::HOST, A::HOST_WRITE));
+    assert_eq!(b[0].dst_access, A::UNIFORM_READ);
+}
+
+#[test]
+fn reading_a_transient_before_anything_wrote_it_is_refused() {
+    let mut g = Graph::new(8, 8);
+    let img = g.create_image("never written", ImageDesc::new_2d(FMT, 8, 8));
+    consume(&mut g, &img, Mips::ALL);
+    let e = g.compile().unwrap_err().to_string();
+    assert!(
+        e.contains("never written") && e.contains("before any pass wrote it"),
+        "{e}"
+    );
+}
+
+#[test]
+fn read_write_of_an_unwritten_transient_is_refused_too() {
+    let mut g = Graph::new(8, 8);
+    let mut img = g.create_image("acc", ImageDesc::new_2d(FMT, 8, 8));
+    let mut out = g.import_buffer(
+        "out",
+        fake_buffer(),
+        Access::Nothing,
+        Some(Access::HostRead),
+    );
+    g.add_pass("accumulate")
+        .write(&mut img, Access::ComputeStorageReadWrite, Mips::ALL)
+        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    assert!(g.compile().is_err());
+}
+
+#[test]
+fn acquired_swapchain_image_chains_to_the_acquire_wait_and_leaves_for_present() {
+    let mut g = Graph::new(8, 8);
+    let ldr = {
+        let mut i = g.create_image("ldr", ImageDesc::new_2d(FMT, 8, 8));
+        g.add_pass("composite")
+            .write(&mut i, Access::ComputeStorageWrite, Mips::ALL);
+        i
+    };
+    let mut sc = g.import_image(
+        "swapchain",
+        ImageDesc::new_2d(vk::Format::B8G8R8A8_UNORM, 8, 8),
+        fake_image(1),
+        Access::Acquired,
+        Some(Access::Present),
+    );
+    g.add_pass("present blit")
+        .read(&ldr, Access::TransferRead, Mips::ALL)
+        .write(&mut sc, Access::TransferWrite, Mips::ALL);
+    g.add_pass("gui")
+        .write(&mut sc, Access::ColorAttachmentWrite, Mips::ALL);
+    let c = g.compile().unwrap();
+    assert_eq!(c.order, vec![0, 1, 2]);
+    assert_sources_valid(&c);
+    let acq = Access::Acquired.info().stage;
+    let first: Vec<_> = c.before[1].images.iter().filter(|b| b.image == 1).collect();
+    assert_eq!(first.len(), 1);
+    // Khronos: srcStage = the semaphore's wait stage, srcAccess = 0, from UNDEFINED.
+    assert_eq!(first[0].src_stage, acq);
+    assert_eq!(first[0].src_access, A::NONE);
+    assert_eq!(first[0].old_layout, L::UNDEFINED);
+    assert_eq!(first[0].new_layout, L::TRANSFER_DST_OPTIMAL);
+    // Leaves in PRESENT_SRC after the colour writes are flushed.
+    let last: Vec<_> = c.after.images.iter().filter(|b| b.image == 1).collect();
+    assert_eq!(last.len(), 1);
+    assert_eq!(last[0].new_layout, L::PRESENT_SRC_KHR);
+    assert_eq!(
+        (last[0].src_stage, last[0].src_access),
+        (
+            S::COLOR_ATTACHMENT_OUTPUT,
+            A::COLOR_ATTACHMENT_READ | A::COLOR_ATTACHMENT_WRITE
+        )
+    );
+}
+
+#[test]
+fn no_barrier_of_a_long_mixed_chain_names_an_access_its_stage_cannot_perform() {
+    // Every ordered pair of accesses on one image, followed by a third read.
+    let image_accesses: Vec<Access> = Access::ALL
+        .into_iter()
+        .filter(|a| {
+            a.valid_for_image()
+                && !matches!(a, Access::Nothing | Access::Acquired | Access::Present)
+                && !matches!(a, Access::HostRead | Access::HostWrite)
+        })
+        .collect();
+    // The first write must not read (the image starts undefined).
+    for &w in image_accesses
+        .iter()
+        .filter(|a| a.info().writes && **a != Access::ComputeStorageReadWrite)
+    {
+        for &r1 in &image_accesses {
+            for &r2 in &image_accesses {
+                let mut g = Graph::new(8, 8);
+                let mut img = g.import_image(
+                    "a",
+                    ImageDesc::new_2d(FMT, 8, 8),
+                    fake_image(1),
+                    Access::Nothing,
+                    Some(Access::ComputeSampledRead),
+                );
+                let mut out = g.import_buffer(
+                    "out",
+                    fake_buffer(),
+                    Access::Nothing,
+                    Some(Access::HostRead),
+                );
+                g.add_pass("w").write(&mut img, w, Mips::ALL);
+                for (n, a) in [("1", r1), ("2", r2)] {
+                    // Readers also write an exported buffer, so none is culled.
+                    let p = g
+                        .add_pass(n)
+                        .write_buffer(&mut out, Access::ComputeStorageWrite);
+                    if a.info().writes {
+                        p.write(&mut img, a, Mips::ALL);
+                    } else {
+                        p.read(&img, a, Mips::ALL);
+                    }
+                }
+                let c = g.compile().unwrap();
+                assert_eq!(c.order.len(), 3);
+                assert_sources_valid(&c);
+            }
+        }
+    }
 }

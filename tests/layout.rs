@@ -151,7 +151,7 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
     ] {
         assert_eq!(define(composite, name), f64::from(rust), "{name}");
     }
-    // The AOV's outcome codes are binding (DESIGN.md section 4).
+    // The AOV's outcome codes are binding (the geodesic AOV table in the README).
     let raymarch = include_str!("../shaders/raymarch.comp");
     for (name, code) in [
         ("OUT_ESCAPED", 0.0),

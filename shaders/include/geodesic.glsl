@@ -1,4 +1,4 @@
-// Light paths around Schwarzschild holes (DESIGN.md section 2):
+// Light paths around Schwarzschild holes (the conventions in the README, "Physics"):
 //   x'' = -1.5 rs h^2 x / r^5,  h = |x cross x'|, x measured from the hole,
 // which reproduces the exact spatial shape of null geodesics (Binet's
 // u'' + u = 1.5 rs u^2). Several holes: accelerations summed (approximate).

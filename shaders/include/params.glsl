@@ -23,8 +23,8 @@
 layout(std140, binding = 1) uniform RaymarchParams {
     vec4 cam_pos;      // xyz: camera position; w: tan(vfov / 2)
     vec4 cam_right;    // xyz: right;           w: aspect (W / H)
-    vec4 cam_up;       // xyz: camera up
-    vec4 cam_fwd;      // xyz: forward
+    vec4 cam_up;       // xyz: camera up;       w: sub-pixel jitter x (pixels, 0 = centre)
+    vec4 cam_fwd;      // xyz: forward;         w: sub-pixel jitter y (pixels, down)
     vec4 disk_normal;  // xyz: unit normal;     w: disk kind
     vec4 disk;         // x: inner radius, y: outer radius, z: brightness
     vec4 disk_e1;      // xyz: in-plane basis vector (azimuth 0)

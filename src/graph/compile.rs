@@ -12,7 +12,8 @@
 //!    what earlier passes wrote, so declaration order is already a valid order.
 //! 4. Derive usage flags of every image and buffer from their live accesses.
 //! 5. Track the state of every subresource through the live passes and emit
-//!    the minimal barrier before each use: a layout change, a write after
+//!    the minimal barrier before each use (a read of a transient nobody wrote
+//!    is refused: its contents would be undefined): a layout change, a write after
 //!    anything (WAW / WAR), or a read of a write not yet made visible to that
 //!    stage and access (RAW). Reads of an already visible write add nothing.
 //! 6. Merge adjacent mip levels whose barriers are identical into one range.
@@ -81,12 +82,24 @@ pub struct Compiled {
 }
 
 /// Synchronization state of one subresource (one mip, or one buffer).
+///
+/// A write goes through three steps: it happens (`sync_stage`, `pending`),
+/// a barrier makes it available (`pending` becomes empty, but later barriers
+/// still chain from `sync_stage`), and barriers make it visible to each
+/// (stage, access) that reads it (`visible_*`). A layout transition is a write
+/// that the barrier performing it has already made available.
 #[derive(Clone, Copy, Debug)]
 struct SubState {
     layout: vk::ImageLayout,
-    /// Stage and access of the last write, if any.
-    write_stage: vk::PipelineStageFlags2,
-    write_access: vk::AccessFlags2,
+    /// Stages a later access must wait for to come after the last write (or
+    /// the last layout transition): the write's own stage, or the destination
+    /// stage of the barrier that transitioned the layout.
+    sync_stage: vk::PipelineStageFlags2,
+    /// Access mask of the last write not yet made available (empty once a
+    /// barrier has flushed it). Always supported by `sync_stage`.
+    pending: vk::AccessFlags2,
+    /// Whether the subresource holds written data (a transient starts without).
+    written: bool,
     /// Stages and accesses the last write (or transition) is already visible to.
     visible_stage: vk::PipelineStageFlags2,
     visible_access: vk::AccessFlags2,
@@ -99,15 +112,16 @@ impl SubState {
         let i = access.info();
         let mut s = SubState {
             layout: i.layout,
-            write_stage: vk::PipelineStageFlags2::NONE,
-            write_access: vk::AccessFlags2::NONE,
+            sync_stage: vk::PipelineStageFlags2::NONE,
+            pending: vk::AccessFlags2::NONE,
+            written: !matches!(access, Access::Nothing | Access::Acquired),
             visible_stage: vk::PipelineStageFlags2::NONE,
             visible_access: vk::AccessFlags2::NONE,
             read_stage: vk::PipelineStageFlags2::NONE,
         };
         if i.writes {
-            s.write_stage = i.stage;
-            s.write_access = i.access;
+            s.sync_stage = i.stage;
+            s.pending = i.access;
         } else {
             s.read_stage = i.stage;
         }
@@ -141,25 +155,22 @@ fn transition(s: &mut SubState, access: Access, track_layout: bool) -> Option<De
         vk::ImageLayout::UNDEFINED
     };
     let layout_change = track_layout && s.layout != new_layout;
+    let has_write = !s.sync_stage.is_empty() || !s.pending.is_empty();
     let dep = if i.writes || layout_change {
         // A write (or a layout transition, which writes) must wait for the last
-        // write and every read since, and the last write must be made available.
+        // write and every read since, and a write not yet available is flushed.
         // The visible stages chain through an earlier barrier to that write.
-        let src_stage = s.write_stage | s.read_stage | s.visible_stage;
+        let src_stage = s.sync_stage | s.read_stage | s.visible_stage;
         let needed = !src_stage.is_empty() || layout_change;
         needed.then_some((
-            src_stage,
-            s.write_access,
-            i.stage,
-            i.access,
-            s.layout,
-            new_layout,
+            src_stage, s.pending, i.stage, i.access, s.layout, new_layout,
         ))
-    } else if !s.write_access.is_empty() && !already_visible(s, i) {
-        // Read after a write not yet visible to this stage and access.
+    } else if has_write && !already_visible(s, i) {
+        // Read after a write not yet visible to this stage and access: chain
+        // from the write (or the barrier that flushed it); flush it if needed.
         Some((
-            s.write_stage | s.visible_stage,
-            s.write_access,
+            s.sync_stage | s.visible_stage,
+            s.pending,
             i.stage,
             i.access,
             s.layout,
@@ -171,23 +182,27 @@ fn transition(s: &mut SubState, access: Access, track_layout: bool) -> Option<De
 
     // Update the state.
     if i.writes {
-        s.write_stage = i.stage;
-        s.write_access = i.access;
+        s.sync_stage = i.stage;
+        s.pending = i.access;
+        s.written = true;
         s.visible_stage = vk::PipelineStageFlags2::NONE;
         s.visible_access = vk::AccessFlags2::NONE;
         s.read_stage = vk::PipelineStageFlags2::NONE;
     } else {
         if layout_change {
-            // The transition is now the last "write"; it is visible to this access.
-            s.write_stage = vk::PipelineStageFlags2::NONE;
+            // The transition is now the last "write": it completes before this
+            // access's stage, is available, and is visible to this access only.
+            s.sync_stage = i.stage;
             s.read_stage = vk::PipelineStageFlags2::NONE;
             s.visible_stage = i.stage;
             s.visible_access = i.access;
-            // Keep write_access: a later reader of another kind still needs
-            // the original write made visible to it.
         } else if dep.is_some() {
             s.visible_stage |= i.stage;
             s.visible_access |= i.access;
+        }
+        // Whatever was pending is available after any barrier.
+        if dep.is_some() {
+            s.pending = vk::AccessFlags2::NONE;
         }
         s.read_stage |= i.stage;
     }
@@ -210,7 +225,8 @@ pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
                     pass.name
                 ))
             })?;
-            if !u.access.valid_for_image() || u.access == Access::Nothing {
+            if !u.access.valid_for_image() || matches!(u.access, Access::Nothing | Access::Acquired)
+            {
                 return Err(Error::Other(format!(
                     "pass `{}`: {:?} is not an image access",
                     pass.name, u.access
@@ -344,12 +360,19 @@ pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
         let mut barriers = PassBarriers::default();
         for u in &pass.images {
             let levels = u.mips.levels(graph.images[u.image].desc.mip_levels);
-            let deps: Vec<(u32, Option<Dep>)> = levels
-                .map(|m| {
-                    let dep = transition(&mut image_state[u.image][m as usize], u.access, true);
-                    (m, dep)
-                })
-                .collect();
+            let mut deps: Vec<(u32, Option<Dep>)> = Vec::with_capacity(levels.len());
+            for m in levels {
+                let state = &mut image_state[u.image][m as usize];
+                let reads = !u.access.info().writes || u.access == Access::ComputeStorageReadWrite;
+                if reads && !state.written {
+                    let node = &graph.images[u.image];
+                    return Err(Error::Other(format!(
+                        "pass `{}` reads mip {m} of `{}` before any pass wrote it",
+                        pass.name, node.name
+                    )));
+                }
+                deps.push((m, transition(state, u.access, true)));
+            }
             // 6. Merge adjacent levels with identical barriers.
             merge_levels(u.image, &deps, &mut barriers.images);
         }

@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::renderer::{Frame, OutputKind, Pixels};
+use crate::frame::{Frame, OutputKind, Pixels};
 use crate::{Error, Result};
 
 /// Output file formats.

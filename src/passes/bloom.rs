@@ -49,7 +49,14 @@ pub fn add_bloom<'a>(
     if settings.strength <= 0.0 {
         return None;
     }
-    let mut chain = graph.create_relative("bloom", BLOOM_FORMAT, 2, settings.levels);
+    // Half the size of the HDR input (which the window may render scaled).
+    let desc = crate::vk::ImageDesc::new_2d(
+        BLOOM_FORMAT,
+        (hdr.desc.width / 2).max(1),
+        (hdr.desc.height / 2).max(1),
+    )
+    .with_mips(settings.levels);
+    let mut chain = graph.create_image("bloom", desc);
     let levels = chain.desc.mip_levels;
     let sampler = pipelines.linear_clamp.sampler;
     let (threshold, knee, radius) = (

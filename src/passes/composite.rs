@@ -37,8 +37,9 @@ pub struct CompositePush {
     pub dither: f32,
 }
 
-/// Adds the composite of `hdr` (plus `bloom`, level 0, if given); returns the
-/// 8-bit image, or with `linear` the bloomed, exposed linear HDR image (no
+/// Adds the composite of `hdr` (plus `bloom`, level 0, if given) at the
+/// graph's output size (upscaling `hdr` bilinearly if it is smaller); returns
+/// the 8-bit image, or with `linear` the bloomed, exposed linear HDR image (no
 /// tone map, no dither).
 pub fn add_composite<'a>(
     graph: &mut Graph<'a>,
@@ -49,7 +50,7 @@ pub fn add_composite<'a>(
     post: &Post,
     linear: bool,
 ) -> ImageHandle {
-    let (width, height) = (hdr.desc.width, hdr.desc.height);
+    let (width, height) = graph.output_size();
     let (name, format, pipeline) = if linear {
         ("post hdr", HDR_POST_FORMAT, &pipelines.composite_hdr)
     } else {

@@ -1,9 +1,11 @@
 //! Effects, one per file. Each is a function that adds passes to a graph and
 //! returns the images it produced; none writes a barrier.
 
+pub mod accumulate;
 pub mod bloom;
 pub mod composite;
 pub mod copy;
+pub mod present;
 pub mod raymarch;
 
 use std::sync::Arc;
@@ -30,6 +32,7 @@ pub struct Pipelines {
     pub composite_hdr: ComputePipeline,
     pub bloom_down: ComputePipeline,
     pub bloom_up: ComputePipeline,
+    pub accumulate: ComputePipeline,
     pub linear_clamp: Sampler,
     pub sky_sampler: Sampler,
 }
@@ -71,6 +74,13 @@ impl Pipelines {
                 crate::shaders::BLOOM_UP,
                 &[BindingKind::SampledImage, BindingKind::StorageImage],
                 std::mem::size_of::<bloom::BloomUpPush>() as u32,
+            )?,
+            accumulate: ComputePipeline::new(
+                gpu,
+                "accumulate",
+                crate::shaders::ACCUMULATE,
+                &[BindingKind::StorageImage, BindingKind::StorageImage],
+                std::mem::size_of::<accumulate::AccumulatePush>() as u32,
             )?,
             linear_clamp: Sampler::linear_clamp(gpu)?,
             sky_sampler: Sampler::linear_repeat_u(gpu)?,

@@ -1,5 +1,5 @@
 //! The ray march: one compute invocation per pixel follows the camera ray
-//! along the Schwarzschild light-path equation (DESIGN.md section 2) with an
+//! along the Schwarzschild light-path equation (the conventions in the README, "Physics") with an
 //! adaptive Dormand-Prince 5(4) integrator, and writes linear HDR radiance.
 //!
 //! Technique: the spatial-orbit form x'' = -1.5 rs h^2 x / r^5 of the null
@@ -11,7 +11,7 @@ use ash::vk;
 use bytemuck::{Pod, Zeroable};
 
 use super::{Pipelines, dispatch_2d};
-use crate::graph::{Graph, ImageHandle, Mips};
+use crate::graph::{BufferHandle, Graph, ImageDesc, ImageHandle, Mips};
 use crate::scene::{DiskKind, MAX_HOLES, Scene, SkyKind, VolumeColor};
 use crate::vk::{Access, Descriptor};
 
@@ -40,7 +40,7 @@ pub const AOV_FORMAT: vk::Format = vk::Format::R32G32B32A32_SFLOAT;
 pub enum RaymarchOutput {
     /// Linear HDR radiance.
     Beauty,
-    /// The geodesic AOV of DESIGN.md section 4.
+    /// The geodesic AOV in the README.
     Geodesic,
 }
 
@@ -183,17 +183,39 @@ impl RaymarchParams {
     }
 }
 
-/// Adds the ray march; returns the HDR image it writes.
+/// What the ray march reads: the host-written parameter block and the images.
+pub struct RaymarchInputs<'h> {
+    /// The [`RaymarchParams`] uniform buffer, written by the host this frame.
+    pub params: &'h BufferHandle,
+    pub disk_lut: &'h ImageHandle,
+    /// The image sky; the colour table again when the sky is not an image
+    /// (the binding must hold something; the shader never samples it).
+    pub sky: &'h ImageHandle,
+    pub output: RaymarchOutput,
+    /// Size of the image it writes (the window may render at a fraction).
+    pub size: (u32, u32),
+    /// One hole with gravity: the planar (Binet) path, compiled in by a
+    /// specialization constant.
+    pub one_hole: bool,
+    /// A volumetric disk (specialization constant).
+    pub volume: bool,
+}
+
+/// Adds the ray march; returns the HDR image (or the AOV) it writes.
 pub fn add_raymarch<'a>(
     graph: &mut Graph<'a>,
     pipelines: &'a Pipelines,
-    params: vk::Buffer,
-    disk_lut: &ImageHandle,
-    sky: &ImageHandle,
-    output: RaymarchOutput,
-    one_hole: bool,
-    volume: bool,
+    inputs: RaymarchInputs<'_>,
 ) -> ImageHandle {
+    let RaymarchInputs {
+        params,
+        disk_lut,
+        sky,
+        output,
+        size: (width, height),
+        one_hole,
+        volume,
+    } = inputs;
     let (name, format, pipeline) = match output {
         RaymarchOutput::Beauty => (
             "hdr",
@@ -206,13 +228,12 @@ pub fn add_raymarch<'a>(
             &pipelines.raymarch_aov[usize::from(one_hole)],
         ),
     };
-    let (width, height) = graph.output_size();
-    let mut hdr = graph.create_relative(name, format, 1, 1);
-    let (out, lut, sky_tex) = (hdr.clone(), disk_lut.clone(), sky.clone());
+    let mut hdr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
+    let (out, lut, sky_tex, ubo) = (hdr.clone(), disk_lut.clone(), sky.clone(), params.clone());
     let mut pass = graph
         .add_pass("raymarch")
+        .read_buffer(params, Access::ComputeUniformRead)
         .read(disk_lut, Access::ComputeSampledRead, Mips::ALL);
-    // Without an image sky the binding holds the colour table (never sampled).
     if sky != disk_lut {
         pass = pass.read(sky, Access::ComputeSampledRead, Mips::ALL);
     }
@@ -223,7 +244,7 @@ pub fn add_raymarch<'a>(
                 pipeline,
                 &[
                     Descriptor::StorageImage(ctx.view(&out, 0)),
-                    Descriptor::UniformBuffer(params),
+                    Descriptor::UniformBuffer(ctx.buffer(&ubo)),
                     Descriptor::SampledImage(ctx.full_view(&lut), pipelines.linear_clamp.sampler),
                     Descriptor::SampledImage(
                         ctx.full_view(&sky_tex),

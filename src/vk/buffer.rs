@@ -8,8 +8,14 @@ use gpu_allocator::vulkan::Allocation;
 
 use super::{Gpu, memory};
 use crate::error::VkContext;
-use crate::graph::BufferBinding;
 use crate::{Error, Result};
+
+/// The Vulkan object behind an imported buffer.
+#[derive(Clone, Copy, Debug)]
+pub struct BufferBinding {
+    pub buffer: vk::Buffer,
+    pub size: u64,
+}
 
 /// A buffer with its own named allocation.
 pub struct Buffer {

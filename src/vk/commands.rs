@@ -1,6 +1,6 @@
-//! One command pool, one command buffer and its fence: the offscreen renderer
-//! records a frame, submits it and waits. (The windowed demo keeps one of these
-//! per frame in flight.)
+//! One command pool, one command buffer and its fence. A frame slot owns one:
+//! it records a frame, submits it (optionally waiting on and signalling
+//! semaphores, for a swapchain), and waits on the fence before reusing it.
 
 use std::sync::Arc;
 
@@ -78,8 +78,13 @@ impl CommandContext {
         Ok(self.cmd)
     }
 
-    /// Ends recording, submits, and waits for the GPU to finish.
-    pub fn submit_and_wait(&mut self) -> Result<()> {
+    /// Ends recording and submits; `waits` are (semaphore, stages that wait
+    /// on it), `signals` are signalled once every command has finished.
+    pub fn submit(
+        &mut self,
+        waits: &[(vk::Semaphore, vk::PipelineStageFlags2)],
+        signals: &[vk::Semaphore],
+    ) -> Result<()> {
         let d = &self.gpu.device;
         // SAFETY: the buffer is recording; the fence is ours.
         unsafe {
@@ -88,12 +93,45 @@ impl CommandContext {
             d.reset_fences(&[self.fence])
                 .ctx(|| "resetting the frame fence".into())?;
         }
+        let wait_infos: Vec<vk::SemaphoreSubmitInfo<'_>> = waits
+            .iter()
+            .map(|&(s, stage)| {
+                vk::SemaphoreSubmitInfo::default()
+                    .semaphore(s)
+                    .stage_mask(stage)
+            })
+            .collect();
+        let signal_infos: Vec<vk::SemaphoreSubmitInfo<'_>> = signals
+            .iter()
+            .map(|&s| {
+                vk::SemaphoreSubmitInfo::default()
+                    .semaphore(s)
+                    .stage_mask(vk::PipelineStageFlags2::ALL_COMMANDS)
+            })
+            .collect();
         let cmd_infos = [vk::CommandBufferSubmitInfo::default().command_buffer(self.cmd)];
-        let submit = [vk::SubmitInfo2::default().command_buffer_infos(&cmd_infos)];
-        self.gpu.queue_submit2(&submit, self.fence)?;
-        // SAFETY: as above.
-        unsafe { d.wait_for_fences(&[self.fence], true, u64::MAX) }
-            .ctx(|| "waiting for the frame to finish".into())
+        let submit = [vk::SubmitInfo2::default()
+            .wait_semaphore_infos(&wait_infos)
+            .command_buffer_infos(&cmd_infos)
+            .signal_semaphore_infos(&signal_infos)];
+        self.gpu.queue_submit2(&submit, self.fence)
+    }
+
+    /// Waits until the last submission has finished.
+    pub fn wait(&self) -> Result<()> {
+        // SAFETY: the fence is ours.
+        unsafe {
+            self.gpu
+                .device
+                .wait_for_fences(&[self.fence], true, u64::MAX)
+        }
+        .ctx(|| "waiting for the frame to finish".into())
+    }
+
+    /// Ends recording, submits, and waits for the GPU to finish.
+    pub fn submit_and_wait(&mut self) -> Result<()> {
+        self.submit(&[], &[])?;
+        self.wait()
     }
 }
 

@@ -251,6 +251,18 @@ impl Gpu {
         })
     }
 
+    /// Largest width or height of a 2-D image on this device.
+    pub fn max_image_dimension(&self) -> u32 {
+        // SAFETY: the physical device belongs to the live instance.
+        unsafe {
+            self.instance
+                .instance
+                .get_physical_device_properties(self.physical)
+        }
+        .limits
+        .max_image_dimension2_d
+    }
+
     /// The allocator, locked. Poisoning only follows a panic elsewhere.
     pub fn allocator(&self) -> MutexGuard<'_, Allocator> {
         self.allocator.lock().unwrap_or_else(|p| p.into_inner())

@@ -9,7 +9,51 @@ use gpu_allocator::vulkan::Allocation;
 use super::{Gpu, memory};
 use crate::Result;
 use crate::error::VkContext;
-use crate::graph::{ImageBinding, ImageDesc};
+
+/// Format, size and mip count of a 2-D colour image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ImageDesc {
+    pub format: vk::Format,
+    pub width: u32,
+    pub height: u32,
+    pub mip_levels: u32,
+}
+
+impl ImageDesc {
+    /// A single-level 2-D image.
+    pub fn new_2d(format: vk::Format, width: u32, height: u32) -> Self {
+        ImageDesc {
+            format,
+            width,
+            height,
+            mip_levels: 1,
+        }
+    }
+
+    /// The same image with `levels` mip levels (clamped to what the size allows).
+    pub fn with_mips(mut self, levels: u32) -> Self {
+        let max = 32 - self.width.max(self.height).max(1).leading_zeros();
+        self.mip_levels = levels.clamp(1, max);
+        self
+    }
+
+    /// Width and height of mip `level`.
+    pub fn mip_extent(&self, level: u32) -> (u32, u32) {
+        ((self.width >> level).max(1), (self.height >> level).max(1))
+    }
+}
+
+/// The Vulkan objects behind an imported image (a readback target, a
+/// swapchain image). The importer owns them and keeps them alive until the
+/// frame's fence has signalled.
+#[derive(Clone, Debug)]
+pub struct ImageBinding {
+    pub image: vk::Image,
+    /// One view per mip level, indexed by level.
+    pub mip_views: Vec<vk::ImageView>,
+    /// A view of all levels (for sampling with mips).
+    pub full_view: vk::ImageView,
+}
 
 /// A 2-D colour image with one view per mip level and one of all levels.
 pub struct Image {

@@ -12,11 +12,11 @@ pub mod pipeline;
 pub mod sync;
 pub mod timestamps;
 
-pub use buffer::Buffer;
+pub use buffer::{Buffer, BufferBinding};
 pub use commands::CommandContext;
 pub use descriptors::{Descriptor, bind_compute, push_constants};
 pub use device::{DeviceInfo, Gpu};
-pub use image::{Image, Sampler};
+pub use image::{Image, ImageBinding, ImageDesc, Sampler};
 pub use instance::Validation;
 pub use pipeline::{BindingKind, ComputePipeline};
 pub use sync::{Access, AccessInfo};

@@ -36,6 +36,11 @@ pub enum Access {
     FragmentSampledRead,
     /// Handed to the presentation engine.
     Present,
+    /// A swapchain image just acquired: contents undefined, and the acquire
+    /// semaphore is waited at exactly these stages, so the first barrier
+    /// chains to it (Khronos synchronization examples, "Swapchain Image
+    /// Acquire and Present").
+    Acquired,
 }
 
 /// What [`Access::info`] returns: everything a barrier needs about one side.
@@ -51,7 +56,7 @@ pub struct AccessInfo {
 
 impl Access {
     /// Every access kind, for exhaustive tests.
-    pub const ALL: [Access; 13] = [
+    pub const ALL: [Access; 14] = [
         Access::Nothing,
         Access::ComputeSampledRead,
         Access::ComputeStorageRead,
@@ -65,6 +70,7 @@ impl Access {
         Access::ColorAttachmentWrite,
         Access::FragmentSampledRead,
         Access::Present,
+        Access::Acquired,
     ];
 
     /// The table: stage, access mask, layout, and whether it writes.
@@ -93,8 +99,19 @@ impl Access {
                 true,
             ),
             Access::ComputeUniformRead => (S::COMPUTE_SHADER, A::UNIFORM_READ, L::UNDEFINED, false),
-            Access::TransferRead => (S::COPY, A::TRANSFER_READ, L::TRANSFER_SRC_OPTIMAL, false),
-            Access::TransferWrite => (S::COPY, A::TRANSFER_WRITE, L::TRANSFER_DST_OPTIMAL, true),
+            // Every transfer command (copy, blit, clear): the present pass blits.
+            Access::TransferRead => (
+                S::ALL_TRANSFER,
+                A::TRANSFER_READ,
+                L::TRANSFER_SRC_OPTIMAL,
+                false,
+            ),
+            Access::TransferWrite => (
+                S::ALL_TRANSFER,
+                A::TRANSFER_WRITE,
+                L::TRANSFER_DST_OPTIMAL,
+                true,
+            ),
             Access::HostRead => (S::HOST, A::HOST_READ, L::GENERAL, false),
             Access::HostWrite => (S::HOST, A::HOST_WRITE, L::GENERAL, true),
             Access::ColorAttachmentWrite => (
@@ -111,6 +128,14 @@ impl Access {
             ),
             // Presentation needs no stage or access: the semaphore orders it.
             Access::Present => (S::NONE, A::NONE, L::PRESENT_SRC_KHR, false),
+            // Only an execution dependency on the semaphore wait; the first
+            // use discards the contents (old layout UNDEFINED).
+            Access::Acquired => (
+                S::ALL_TRANSFER | S::COLOR_ATTACHMENT_OUTPUT,
+                A::NONE,
+                L::UNDEFINED,
+                false,
+            ),
         };
         AccessInfo {
             stage,
@@ -135,7 +160,8 @@ impl Access {
             | Access::ComputeUniformRead
             | Access::HostRead
             | Access::HostWrite
-            | Access::Present => U::empty(),
+            | Access::Present
+            | Access::Acquired => U::empty(),
         }
     }
 
@@ -166,6 +192,7 @@ impl Access {
                 | Access::FragmentSampledRead
                 | Access::ColorAttachmentWrite
                 | Access::Present
+                | Access::Acquired
         )
     }
 }
@@ -189,7 +216,7 @@ mod tests {
     #[test]
     fn every_image_access_but_nothing_names_a_defined_layout() {
         for a in Access::ALL {
-            if a.valid_for_image() && a != Access::Nothing {
+            if a.valid_for_image() && a != Access::Nothing && a != Access::Acquired {
                 assert_ne!(a.info().layout, vk::ImageLayout::UNDEFINED, "{a:?}");
             }
         }

@@ -1,8 +1,29 @@
 //! `blackhole profile`: render N frames and summarise GPU time per pass.
 
-use crate::renderer::{FrameTimings, OutputKind, Renderer};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use super::{View, finish, load_scene};
+use crate::frame::{FrameTimings, OutputKind};
 use crate::scene::Scene;
-use crate::{Error, Result};
+use crate::{Error, Renderer, RendererOptions, Result, output};
+
+/// `blackhole profile`: times the frames and prints (and optionally writes) the report.
+pub fn run_command(view: View, frames: u32, json: Option<PathBuf>) -> Result<ExitCode> {
+    let scene = load_scene(view.scene.as_deref())?;
+    let mut renderer = Renderer::new(RendererOptions::default())?;
+    let report = run(&mut renderer, &scene, view.width, view.height, frames)?;
+    print!("{}", report.table());
+    if let Some(path) = json {
+        output::write_atomically(&path, |tmp| {
+            std::fs::write(tmp, report.to_json()).map_err(|source| Error::Io {
+                path: path.clone(),
+                source,
+            })
+        })?;
+    }
+    finish(renderer)
+}
 
 /// Median and 95th percentile of one series, in milliseconds.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
@@ -35,7 +56,7 @@ pub struct PassReport {
     pub stats: Stats,
 }
 
-/// The whole report (the binding `--json` shape of DESIGN.md section 1).
+/// The whole report (the binding `--json` shape documented in the README).
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct Report {
     pub device: String,

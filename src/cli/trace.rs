@@ -12,6 +12,14 @@ use crate::physics::geodesic::{Hole, Outcome, TraceOptions, trace};
 use crate::scene::Scene;
 use crate::{Error, Result};
 
+/// `blackhole trace`: writes the SVG for the scene (or preset) named.
+pub fn run(scene: Option<&str>, out: &Path) -> Result<std::process::ExitCode> {
+    let scene = super::load_scene(scene)?;
+    write_svg(&scene, out)?;
+    println!("wrote {}", out.display());
+    Ok(std::process::ExitCode::SUCCESS)
+}
+
 /// Impact parameters drawn, as multiples of b_c.
 pub const FAN: [f64; 14] = [
     0.3, 0.6, 0.85, 0.95, 0.99, 0.999, 1.001, 1.01, 1.05, 1.15, 1.3, 1.6, 2.2, 3.0,

@@ -1,0 +1,166 @@
+//! The command line: argument definitions (clap) and one module per command.
+//! `main.rs` only parses and calls [`run`].
+
+pub mod profile;
+pub mod render;
+pub mod trace;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+use crate::{Error, Renderer, Scene};
+
+/// `blackhole`: the whole command line.
+#[derive(Parser)]
+#[command(
+    name = "blackhole",
+    version,
+    about = "A Schwarzschild black-hole renderer on Vulkan"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Aov {
+    /// The rendered image.
+    Beauty,
+    /// The geodesic AOV (the geodesic AOV table in the README).
+    Geodesic,
+}
+
+/// What to render and at what size (shared by `render` and `profile`).
+#[derive(clap::Args)]
+pub struct View {
+    /// Scene TOML file or built-in preset name (default: the built-in default scene).
+    #[arg(long)]
+    pub scene: Option<String>,
+    /// Image width in pixels.
+    #[arg(long, default_value_t = 1280, value_parser = clap::value_parser!(u32).range(1..=16384))]
+    pub width: u32,
+    /// Image height in pixels.
+    #[arg(long, default_value_t = 720, value_parser = clap::value_parser!(u32).range(1..=16384))]
+    pub height: u32,
+}
+
+/// The named scene or preset, or the built-in default.
+pub fn load_scene(name: Option<&str>) -> Result<Scene, Error> {
+    match name {
+        Some(s) => Scene::load(s),
+        None => Scene::builtin_default(),
+    }
+}
+
+#[derive(Subcommand)]
+pub enum Command {
+    /// Render a still or a sequence offscreen to PNG (8-bit sRGB, tone-mapped) or EXR (linear HDR).
+    #[command(after_help = presets_help())]
+    Render {
+        #[command(flatten)]
+        view: View,
+        /// Output file; the extension chooses the format (.png or .exr).
+        #[arg(long, default_value = "blackhole.png")]
+        out: PathBuf,
+        /// What to write: the image, or per pixel where its ray went (EXR only;
+        /// R,G,B,A = direction, or radius/azimuth/redshift, and the outcome).
+        #[arg(long, value_enum, default_value_t = Aov::Beauty)]
+        aov: Aov,
+        /// Render frames A to B-1 of the scene's [animation] as a numbered
+        /// sequence: --out out.png writes out_0000.png, out_0001.png, ...
+        /// Frame i is at time i / fps, so ranges can be split across machines.
+        #[arg(long, value_name = "A..B", value_parser = parse_range)]
+        frames: Option<std::ops::Range<u64>>,
+        /// With an .exr --out: apply bloom and exposure (still linear, no tone
+        /// map). Without it an EXR is the ray march's radiance as it is.
+        #[arg(long)]
+        exr_post: bool,
+    },
+    /// Plot photon paths in the hole's equatorial plane (SVG), with the horizon,
+    /// the photon sphere and the ISCO.
+    Trace {
+        /// Scene TOML file or preset (its first hole sets rs).
+        #[arg(long)]
+        scene: Option<String>,
+        /// Output SVG file.
+        #[arg(long, default_value = "paths.svg")]
+        out: PathBuf,
+    },
+    /// Render N frames and print GPU time per pass (median, p95, share of frame).
+    #[command(after_help = presets_help())]
+    Profile {
+        #[command(flatten)]
+        view: View,
+        /// Frames to time (after one warm-up frame).
+        #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u32).range(1..=100000))]
+        frames: u32,
+        /// Also write the figures as JSON.
+        #[arg(long)]
+        json: Option<PathBuf>,
+    },
+}
+
+fn parse_range(s: &str) -> Result<std::ops::Range<u64>, String> {
+    let (a, b) = s
+        .split_once("..")
+        .ok_or_else(|| format!("`{s}` is not a range A..B (for example 0..120)"))?;
+    let a: u64 = a
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{a}` in `{s}` is not a frame number"))?;
+    let b: u64 = b
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{b}` in `{s}` is not a frame number"))?;
+    if b <= a {
+        return Err(format!(
+            "`{s}` is empty: the end is exclusive and must be greater than the start"
+        ));
+    }
+    Ok(a..b)
+}
+
+fn presets_help() -> String {
+    let lines: Vec<String> = crate::scene::PRESETS
+        .iter()
+        .map(|(name, what, _)| format!("  {name:<12} {what}"))
+        .collect();
+    format!("Built-in presets (--scene NAME):\n{}", lines.join("\n"))
+}
+
+/// Runs a parsed command line; the exit code on success.
+pub fn run(cli: Cli) -> Result<ExitCode, Error> {
+    match cli.command {
+        Command::Render {
+            view,
+            out,
+            aov,
+            frames,
+            exr_post,
+        } => render::run(view, out, aov, frames, exr_post),
+        Command::Trace { scene, out } => trace::run(scene.as_deref(), &out),
+        Command::Profile { view, frames, json } => profile::run_command(view, frames, json),
+    }
+}
+
+/// Shuts the renderer down (checking for leaks) and gives the exit code.
+pub fn finish(renderer: Renderer) -> Result<ExitCode, Error> {
+    let code = validation_verdict(&renderer);
+    renderer.shutdown()?;
+    Ok(code)
+}
+
+/// With validation on, any error or warning fails the run (exit 3).
+fn validation_verdict(renderer: &Renderer) -> ExitCode {
+    let (errors, warnings) = renderer.validation_counts();
+    if renderer.validation_enabled() {
+        eprintln!("validation: {errors} errors, {warnings} warnings");
+    }
+    if errors + warnings > 0 {
+        ExitCode::from(3)
+    } else {
+        ExitCode::SUCCESS
+    }
+}

@@ -1,0 +1,91 @@
+//! What a frame is once it leaves the GPU: its pixels and the GPU time of each
+//! pass. Shared by the renderer (which produces frames) and the output writers
+//! (which store them), so neither depends on the other.
+
+/// What a render produces.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OutputKind {
+    /// Tone-mapped, sRGB-encoded 8-bit RGBA.
+    Ldr,
+    /// Linear HDR RGBA, before tone mapping.
+    Hdr,
+    /// The geodesic AOV (the geodesic AOV table in the README), RGBA32F.
+    Geodesic,
+    /// Linear HDR after bloom and exposure, before the tone map (`--exr-post`).
+    HdrPost,
+}
+
+impl OutputKind {
+    /// Bytes per texel of the image read back for this kind.
+    pub fn texel_bytes(self) -> u64 {
+        match self {
+            OutputKind::Ldr => 4,
+            OutputKind::Hdr | OutputKind::HdrPost => 8,
+            OutputKind::Geodesic => 16,
+        }
+    }
+}
+
+/// Pixels read back from the GPU, row 0 at the top.
+#[derive(Clone, Debug)]
+pub enum Pixels {
+    Rgba8(Vec<u8>),
+    Rgba32F(Vec<f32>),
+}
+
+impl Pixels {
+    /// Decodes a tightly packed readback of an image of `kind`: 8-bit RGBA
+    /// as it is, RGBA16F widened to f32, RGBA32F as it is.
+    pub fn decode(kind: OutputKind, bytes: &[u8]) -> Self {
+        match kind {
+            OutputKind::Ldr => Pixels::Rgba8(bytes.to_vec()),
+            OutputKind::Hdr | OutputKind::HdrPost => Pixels::Rgba32F(
+                bytes
+                    .chunks_exact(2)
+                    .map(|c| half::f16::from_le_bytes([c[0], c[1]]).to_f32())
+                    .collect(),
+            ),
+            OutputKind::Geodesic => Pixels::Rgba32F(
+                bytes
+                    .chunks_exact(4)
+                    .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+                    .collect(),
+            ),
+        }
+    }
+}
+
+/// One rendered frame.
+#[derive(Clone, Debug)]
+pub struct Frame {
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Pixels,
+    pub timings: FrameTimings,
+}
+
+/// GPU time of one pass.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PassTiming {
+    pub name: String,
+    pub ms: f64,
+}
+
+/// GPU time per pass of one frame (empty when the device has no timestamps).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct FrameTimings {
+    pub passes: Vec<PassTiming>,
+    /// From the first pass's start to the last pass's end.
+    pub frame_ms: f64,
+}
+
+impl std::fmt::Display for FrameTimings {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let parts: Vec<String> = self
+            .passes
+            .iter()
+            .map(|p| format!("{} {:.2} ms", p.name, p.ms))
+            .collect();
+        write!(f, "{} (frame {:.2} ms)", parts.join(", "), self.frame_ms)
+    }
+}

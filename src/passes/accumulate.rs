@@ -1,0 +1,64 @@
+//! Progressive refinement: the window re-renders an unchanged view with a new
+//! sub-pixel jitter each frame and keeps the running mean of the samples, so
+//! the still converges to an anti-aliased image (Monte Carlo pixel
+//! integration with a box filter, as in any progressive path tracer). Any
+//! change of the view restarts the mean at sample 0.
+
+use bytemuck::{Pod, Zeroable};
+
+use super::{Pipelines, dispatch_2d};
+use crate::graph::{Graph, ImageHandle, Mips};
+use crate::vk::{Access, Descriptor};
+
+/// Format of the running mean (f32: thousands of samples without drift).
+pub const MEAN_FORMAT: ash::vk::Format = ash::vk::Format::R32G32B32A32_SFLOAT;
+
+/// Push constants of `shaders/accumulate.comp`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct AccumulatePush {
+    pub width: u32,
+    pub height: u32,
+    pub weight: f32,
+}
+
+/// Folds `sample` (the `index`-th sample of this view, 0-based) into `mean`,
+/// an image kept across frames. Sample 0 overwrites the mean, so the mean is
+/// only read (and must hold earlier samples) when `index > 0`.
+pub fn add_accumulate<'a>(
+    graph: &mut Graph<'a>,
+    pipelines: &'a Pipelines,
+    sample: &ImageHandle,
+    mean: &mut ImageHandle,
+    index: u32,
+) {
+    let (width, height) = (sample.desc.width, sample.desc.height);
+    let access = if index == 0 {
+        Access::ComputeStorageWrite
+    } else {
+        Access::ComputeStorageReadWrite
+    };
+    let push = AccumulatePush {
+        width,
+        height,
+        weight: 1.0 / (index as f32 + 1.0),
+    };
+    let (src, dst) = (sample.clone(), mean.clone());
+    graph
+        .add_pass("accumulate")
+        .read(sample, Access::ComputeStorageRead, Mips::ALL)
+        .write(mean, access, Mips::ALL)
+        .record(move |ctx| {
+            dispatch_2d(
+                ctx,
+                &pipelines.accumulate,
+                &[
+                    Descriptor::StorageImage(ctx.view(&src, 0)),
+                    Descriptor::StorageImage(ctx.view(&dst, 0)),
+                ],
+                bytemuck::bytes_of(&push),
+                width,
+                height,
+            )
+        });
+}

@@ -1,0 +1,487 @@
+//! The renderer: owns the device, the pipelines, the resources kept across
+//! frames and the frame slots; builds each frame with the one recipe
+//! ([`recipe::add_frame`]) and runs it, offscreen (read back to the host) or
+//! onto a swapchain image (the window).
+
+pub mod recipe;
+pub mod resources;
+pub mod slots;
+
+use std::sync::Arc;
+
+use ash::vk;
+use gpu_allocator::MemoryLocation;
+
+pub use recipe::{Accumulation, FrameOutput, HdrSource, PostSettings, add_frame};
+pub use slots::{FRAMES_IN_FLIGHT, FrameSlot};
+
+use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
+use crate::graph::{BufferHandle, Graph, ImageHandle};
+use crate::passes::{self, Pipelines, copy, raymarch};
+use crate::scene::{DiskKind, Scene};
+use crate::vk::{Access, Buffer, Gpu, Image, ImageBinding, ImageDesc, Validation};
+use crate::{Error, Result};
+use resources::SceneResources;
+
+/// Options for creating a [`Renderer`].
+#[derive(Clone, Copy, Debug)]
+pub struct RendererOptions {
+    pub validation: Validation,
+}
+
+impl Default for RendererOptions {
+    fn default() -> Self {
+        RendererOptions {
+            validation: Validation::from_env(),
+        }
+    }
+}
+
+/// How the window wants one frame drawn.
+#[derive(Clone, Copy, Debug)]
+pub struct ViewOptions {
+    /// Size of the ray march (the window's size times the render scale).
+    pub render_size: (u32, u32),
+    /// Sub-pixel jitter of the ray march, in pixels (0, 0 = pixel centres).
+    pub jitter: (f32, f32),
+    /// Which sample of an unchanged view this frame is; `None` turns the
+    /// progressive accumulation off.
+    pub sample: Option<u32>,
+}
+
+/// Something drawn over the frame on the swapchain image (the GUI panel).
+pub trait Overlay {
+    /// Adds the overlay's passes; `target` is the swapchain image, holding
+    /// the frame already.
+    fn add_passes<'a>(&'a mut self, graph: &mut Graph<'a>, target: &mut ImageHandle);
+}
+
+/// A swapchain image to draw onto, with its semaphores.
+pub struct SwapchainTarget<'t> {
+    pub desc: ImageDesc,
+    pub binding: ImageBinding,
+    /// Signalled by the acquire; waited at [`Access::Acquired`]'s stages.
+    pub acquired: vk::Semaphore,
+    /// Signalled when the frame is done; presentation waits on it.
+    pub rendered: vk::Semaphore,
+    pub overlay: Option<&'t mut dyn Overlay>,
+}
+
+/// The renderer. Fields drop in declaration order: frame slots and per-view
+/// images, then the shared resources and pipelines, then (through the last
+/// `Arc`) the device.
+pub struct Renderer {
+    slots: Vec<FrameSlot>,
+    /// The slot the next windowed frame uses.
+    next_slot: usize,
+    /// The window's running mean for progressive refinement, with the state
+    /// the last frame left it in.
+    mean: Option<(Image, Access)>,
+    resources: SceneResources,
+    pipelines: Pipelines,
+    gpu: Arc<Gpu>,
+}
+
+impl Renderer {
+    /// Opens the device and builds the pipelines.
+    pub fn new(options: RendererOptions) -> Result<Self> {
+        let gpu = Gpu::new(options.validation)?;
+        Self::with_gpu(gpu)
+    }
+
+    /// Builds the renderer on a device opened by the caller (the window opens
+    /// it with a surface in mind).
+    pub fn with_gpu(gpu: Arc<Gpu>) -> Result<Self> {
+        let pipelines = Pipelines::new(&gpu)?;
+        let resources = SceneResources::new(&gpu)?;
+        let slots = (0..FRAMES_IN_FLIGHT)
+            .map(|i| FrameSlot::new(&gpu, i))
+            .collect::<Result<Vec<_>>>()?;
+        Ok(Renderer {
+            slots,
+            next_slot: 0,
+            mean: None,
+            resources,
+            pipelines,
+            gpu,
+        })
+    }
+
+    /// Destroys everything in the documented order and checks that nothing
+    /// outlived it: every Vulkan object holds the device, so a device still
+    /// referenced afterwards means a leaked object (and its memory).
+    pub fn shutdown(mut self) -> Result<()> {
+        self.wait_idle()?;
+        let device = Arc::downgrade(&self.gpu);
+        drop(self);
+        match device.upgrade() {
+            None => Ok(()),
+            Some(gpu) => Err(Error::Other(format!(
+                "{} Vulkan objects still hold the device after shutdown (leaked)",
+                Arc::strong_count(&gpu) - 1
+            ))),
+        }
+    }
+
+    /// The device.
+    pub fn gpu(&self) -> &Arc<Gpu> {
+        &self.gpu
+    }
+
+    /// The device in use.
+    pub fn device_name(&self) -> &str {
+        &self.gpu.info.name
+    }
+
+    /// Validation errors and warnings reported so far (0, 0 when validation is off).
+    pub fn validation_counts(&self) -> (u32, u32) {
+        self.gpu.validation_counts()
+    }
+
+    /// Whether the validation layer is active.
+    pub fn validation_enabled(&self) -> bool {
+        self.gpu.instance.validation_enabled
+    }
+
+    /// Waits for every frame in flight (their timings are dropped).
+    pub fn wait_idle(&mut self) -> Result<()> {
+        for slot in &mut self.slots {
+            slot.wait()?;
+        }
+        Ok(())
+    }
+
+    /// Drops transient images no frame of each slot used lately (after a
+    /// resize). Waits for the frames in flight first.
+    pub fn trim(&mut self) -> Result<()> {
+        self.wait_idle()?;
+        for slot in &mut self.slots {
+            slot.transients.trim_unused();
+        }
+        Ok(())
+    }
+
+    fn check_size(&self, width: u32, height: u32) -> Result<()> {
+        let max = self.gpu.max_image_dimension();
+        if width == 0 || height == 0 || width > max || height > max {
+            return Err(Error::Usage(format!(
+                "image size {width}x{height} is outside 1..={max} per side on {}",
+                self.gpu.info.name
+            )));
+        }
+        Ok(())
+    }
+
+    /// Uploads the scene's image sky if it changed (after every frame in
+    /// flight is done with the old one).
+    fn prepare_scene(&mut self, scene: &Scene) -> Result<()> {
+        if self.resources.sky_changes(scene) {
+            self.wait_idle()?;
+            self.resources.ensure_sky(scene)?;
+        }
+        Ok(())
+    }
+
+    /// Writes slot `slot`'s parameter block for `scene` (the slot is idle).
+    fn write_params(
+        &mut self,
+        slot: usize,
+        scene: &Scene,
+        size: (u32, u32),
+        jitter: (f32, f32),
+    ) -> Result<()> {
+        let mut params = raymarch::RaymarchParams::new(scene, size.0, size.1);
+        params.cam_up[3] = jitter.0;
+        params.cam_fwd[3] = jitter.1;
+        if let Some((_, sky)) = &self.resources.sky {
+            params.sky[1] = sky.desc.width as f32;
+        }
+        self.slots[slot]
+            .params
+            .mapped_mut()?
+            .copy_from_slice(bytemuck::bytes_of(&params));
+        Ok(())
+    }
+
+    /// Renders `scene` at `width` x `height` offscreen and reads the result
+    /// back (waits for it).
+    pub fn render(
+        &mut self,
+        scene: &Scene,
+        width: u32,
+        height: u32,
+        kind: OutputKind,
+    ) -> Result<Frame> {
+        self.check_size(width, height)?;
+        if kind == OutputKind::Geodesic && scene.disk.kind == DiskKind::Volumetric {
+            return Err(Error::Usage(
+                "--aov geodesic describes thin-disk hits; this scene's disk is volumetric".into(),
+            ));
+        }
+        self.prepare_scene(scene)?;
+        // Offscreen frames are synchronous: always slot 0, once it is idle.
+        const SLOT: usize = 0;
+        self.slots[SLOT].wait()?;
+        self.write_params(SLOT, scene, (width, height), (0.0, 0.0))?;
+        let needed = u64::from(width) * u64::from(height) * kind.texel_bytes();
+        let gpu = self.gpu.clone();
+        let slot = &mut self.slots[SLOT];
+        let readback = slot.ensure_readback(&gpu, needed)?.binding();
+        let params = slot.params.binding();
+
+        let mut g = Graph::new(width, height);
+        let mut out_buf = g.import_buffer(
+            "readback",
+            readback,
+            Access::Nothing,
+            Some(Access::HostRead),
+        );
+        let params = g.import_buffer("raymarch params", params, Access::HostWrite, None);
+        let (lut, sky) = import_scene_images(&mut g, &self.resources);
+        let output = match kind {
+            OutputKind::Ldr => FrameOutput::Ldr,
+            OutputKind::Hdr => FrameOutput::Hdr,
+            OutputKind::HdrPost => FrameOutput::HdrPost,
+            OutputKind::Geodesic => FrameOutput::Geodesic,
+        };
+        let result = add_frame(
+            &mut g,
+            &self.pipelines,
+            HdrSource::RayMarch {
+                scene,
+                params: &params,
+                disk_lut: &lut,
+                sky: &sky,
+                size: (width, height),
+            },
+            PostSettings {
+                bloom: &scene.bloom,
+                post: &scene.post,
+            },
+            output,
+            None,
+        );
+        copy::add_copy_to_buffer(&mut g, &result, &mut out_buf);
+        finish_offscreen(&mut self.slots[SLOT], &self.gpu, g, (width, height), kind)
+    }
+
+    /// Runs the post-processing part of the recipe (bloom, exposure, tone
+    /// map) on an HDR image given as RGBA f32 rows, row 0 at the top; returns
+    /// the 8-bit frame.
+    pub fn post_process(
+        &mut self,
+        hdr: &[f32],
+        width: u32,
+        height: u32,
+        bloom: &crate::scene::Bloom,
+        post: &crate::scene::Post,
+    ) -> Result<Frame> {
+        let texels = width as usize * height as usize;
+        if width == 0 || height == 0 || hdr.len() != 4 * texels {
+            return Err(Error::Usage(format!(
+                "post_process: {} floats do not make a {width}x{height} RGBA image",
+                hdr.len()
+            )));
+        }
+        self.check_size(width, height)?;
+        let bytes: &[u8] = bytemuck::cast_slice(hdr);
+        let mut staging = Buffer::new(
+            &self.gpu,
+            "post input staging",
+            bytes.len() as u64,
+            vk::BufferUsageFlags::TRANSFER_SRC,
+            MemoryLocation::CpuToGpu,
+        )?;
+        staging.mapped_mut()?.copy_from_slice(bytes);
+        const SLOT: usize = 0;
+        self.slots[SLOT].wait()?;
+        let needed = 4 * texels as u64;
+        let gpu = self.gpu.clone();
+        let readback = self.slots[SLOT].ensure_readback(&gpu, needed)?.binding();
+
+        let mut g = Graph::new(width, height);
+        let src = g.import_buffer(
+            "post input staging",
+            staging.binding(),
+            Access::HostWrite,
+            None,
+        );
+        let mut out_buf = g.import_buffer(
+            "readback",
+            readback,
+            Access::Nothing,
+            Some(Access::HostRead),
+        );
+        let mut input = g.create_relative("hdr input", vk::Format::R32G32B32A32_SFLOAT, 1, 1);
+        copy::add_upload(&mut g, &src, &mut input, 16);
+        let ldr = add_frame(
+            &mut g,
+            &self.pipelines,
+            HdrSource::Image(&input),
+            PostSettings { bloom, post },
+            FrameOutput::Ldr,
+            None,
+        );
+        copy::add_copy_to_buffer(&mut g, &ldr, &mut out_buf);
+        let frame = finish_offscreen(
+            &mut self.slots[SLOT],
+            &self.gpu,
+            g,
+            (width, height),
+            OutputKind::Ldr,
+        );
+        drop(staging);
+        frame
+    }
+
+    /// Draws `scene` onto a swapchain image (the window): the frame recipe at
+    /// `view.render_size`, a blit onto the image, then the overlay. Uses the
+    /// next frame slot, waiting only for that slot's previous frame, whose
+    /// GPU timings it returns.
+    pub fn draw_to_swapchain(
+        &mut self,
+        scene: &Scene,
+        view: ViewOptions,
+        target: SwapchainTarget<'_>,
+    ) -> Result<Option<FrameTimings>> {
+        let (w, h) = view.render_size;
+        self.check_size(w, h)?;
+        self.check_size(target.desc.width, target.desc.height)?;
+        self.prepare_scene(scene)?;
+        let slot_index = self.next_slot;
+        self.next_slot = (self.next_slot + 1) % self.slots.len();
+        let timings = self.slots[slot_index].wait()?;
+        self.write_params(slot_index, scene, view.render_size, view.jitter)?;
+
+        // The running mean follows the render size; a new one starts over.
+        let mut sample = view.sample;
+        if let Some(s) = sample.as_mut() {
+            let fits = self
+                .mean
+                .as_ref()
+                .is_some_and(|(img, _)| (img.desc.width, img.desc.height) == (w, h));
+            if !fits {
+                self.wait_idle()?;
+                self.mean = None;
+                self.mean = Some((
+                    Image::new(
+                        &self.gpu,
+                        "accumulated mean",
+                        ImageDesc::new_2d(passes::accumulate::MEAN_FORMAT, w, h),
+                        vk::ImageUsageFlags::STORAGE | vk::ImageUsageFlags::SAMPLED,
+                    )?,
+                    Access::Nothing,
+                ));
+                *s = 0;
+            }
+        }
+
+        let (out_w, out_h) = (target.desc.width, target.desc.height);
+        let mut g = Graph::new(out_w, out_h);
+        let params: BufferHandle = g.import_buffer(
+            "raymarch params",
+            self.slots[slot_index].params.binding(),
+            Access::HostWrite,
+            None,
+        );
+        let (lut, sky) = import_scene_images(&mut g, &self.resources);
+        let mut mean_handle = match (&self.mean, sample) {
+            (Some((img, state)), Some(_)) => Some(g.import_image(
+                "accumulated mean",
+                img.desc,
+                img.binding(),
+                *state,
+                Some(Access::ComputeSampledRead),
+            )),
+            _ => None,
+        };
+        let accumulation = match (mean_handle.as_mut(), sample) {
+            (Some(mean), Some(index)) => Some(Accumulation { mean, index }),
+            _ => None,
+        };
+        let ldr = add_frame(
+            &mut g,
+            &self.pipelines,
+            HdrSource::RayMarch {
+                scene,
+                params: &params,
+                disk_lut: &lut,
+                sky: &sky,
+                size: (w, h),
+            },
+            PostSettings {
+                bloom: &scene.bloom,
+                post: &scene.post,
+            },
+            FrameOutput::Ldr,
+            accumulation,
+        );
+        let mut swap = g.import_image(
+            "swapchain",
+            target.desc,
+            target.binding,
+            Access::Acquired,
+            Some(Access::Present),
+        );
+        passes::present::add_blit_to(&mut g, &ldr, &mut swap);
+        let mut overlay = target.overlay;
+        if let Some(o) = overlay.as_mut() {
+            o.add_passes(&mut g, &mut swap);
+        }
+        let waits = [(target.acquired, Access::Acquired.info().stage)];
+        self.slots[slot_index].submit(&self.gpu, g, &waits, &[target.rendered])?;
+        if let Some((_, state)) = self.mean.as_mut() {
+            if sample.is_some() {
+                *state = Access::ComputeSampledRead;
+            }
+        }
+        Ok(timings)
+    }
+}
+
+/// Submits an offscreen graph on `slot`, waits, and decodes the readback.
+fn finish_offscreen(
+    slot: &mut FrameSlot,
+    gpu: &Gpu,
+    g: Graph<'_>,
+    (width, height): (u32, u32),
+    kind: OutputKind,
+) -> Result<Frame> {
+    slot.submit(gpu, g, &[], &[])?;
+    let timings = slot.wait()?.unwrap_or_default();
+    let readback = slot
+        .readback
+        .as_ref()
+        .ok_or_else(|| Error::Other("readback buffer missing".into()))?;
+    let needed = u64::from(width) * u64::from(height) * kind.texel_bytes();
+    let pixels = Pixels::decode(kind, &readback.mapped()?[..needed as usize]);
+    Ok(Frame {
+        width,
+        height,
+        pixels,
+        timings,
+    })
+}
+
+/// Imports the colour table and the sky (the table again when the sky is not
+/// an image: the binding must hold something).
+fn import_scene_images(g: &mut Graph<'_>, res: &SceneResources) -> (ImageHandle, ImageHandle) {
+    let lut = g.import_image(
+        "disk lut",
+        res.disk_lut.desc,
+        res.disk_lut.binding(),
+        Access::ComputeSampledRead,
+        Some(Access::ComputeSampledRead),
+    );
+    let sky = match &res.sky {
+        Some((_, image)) => g.import_image(
+            "sky",
+            image.desc,
+            image.binding(),
+            Access::ComputeSampledRead,
+            Some(Access::ComputeSampledRead),
+        ),
+        None => lut.clone(),
+    };
+    (lut, sky)
+}

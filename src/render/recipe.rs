@@ -1,0 +1,111 @@
+//! The one frame recipe: the ray march (or a given HDR image), the optional
+//! progressive accumulation, the bloom mip chain and the composite, added to a
+//! graph. Offscreen stills, sequences, the profiler, the post-processing API
+//! and the window all build their frames with [`add_frame`]; what happens to
+//! the result (a readback, a blit to the swapchain, a GUI on top) is added
+//! after it by the caller.
+
+use crate::graph::{BufferHandle, Graph, ImageHandle};
+use crate::passes::{self, Pipelines, composite, raymarch};
+use crate::scene::{Bloom, DiskKind, Post, Scene};
+
+/// Where the frame's linear HDR radiance comes from.
+pub enum HdrSource<'h> {
+    /// The ray march of `scene`, at `size` (the graph's output size, or a
+    /// fraction of it in the window).
+    RayMarch {
+        scene: &'h Scene,
+        params: &'h BufferHandle,
+        disk_lut: &'h ImageHandle,
+        sky: &'h ImageHandle,
+        size: (u32, u32),
+    },
+    /// An image already in the graph (the post-processing API's upload).
+    Image(&'h ImageHandle),
+}
+
+/// What the frame ends in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FrameOutput {
+    /// Bloom, exposure, tone map, sRGB and dither: 8-bit RGBA.
+    Ldr,
+    /// The ray march's linear radiance as it is (EXR output).
+    Hdr,
+    /// Bloom and exposure, still linear (`--exr-post`).
+    HdrPost,
+    /// The geodesic AOV instead of radiance.
+    Geodesic,
+}
+
+/// The progressive accumulation of a still view (window only).
+pub struct Accumulation<'h> {
+    /// The running mean, kept across frames by the caller.
+    pub mean: &'h mut ImageHandle,
+    /// Which sample of the unchanged view this frame is (0 restarts).
+    pub index: u32,
+}
+
+/// Post-processing settings of a frame.
+pub struct PostSettings<'s> {
+    pub bloom: &'s Bloom,
+    pub post: &'s Post,
+}
+
+/// Adds the whole frame to `graph`; returns the image it ends in (at the
+/// graph's output size, except `Hdr` and `Geodesic`, which keep the ray
+/// march's size).
+pub fn add_frame<'a>(
+    graph: &mut Graph<'a>,
+    pipelines: &'a Pipelines,
+    source: HdrSource<'_>,
+    settings: PostSettings<'_>,
+    output: FrameOutput,
+    accumulation: Option<Accumulation<'_>>,
+) -> ImageHandle {
+    let hdr = match source {
+        HdrSource::RayMarch {
+            scene,
+            params,
+            disk_lut,
+            sky,
+            size,
+        } => raymarch::add_raymarch(
+            graph,
+            pipelines,
+            raymarch::RaymarchInputs {
+                params,
+                disk_lut,
+                sky,
+                output: if output == FrameOutput::Geodesic {
+                    raymarch::RaymarchOutput::Geodesic
+                } else {
+                    raymarch::RaymarchOutput::Beauty
+                },
+                size,
+                one_hole: scene.black_holes.len() == 1 && scene.physics.gravity,
+                volume: scene.disk.kind == DiskKind::Volumetric,
+            },
+        ),
+        HdrSource::Image(image) => image.clone(),
+    };
+    if matches!(output, FrameOutput::Hdr | FrameOutput::Geodesic) {
+        return hdr;
+    }
+    let hdr = match accumulation {
+        Some(Accumulation { mean, index }) => {
+            passes::accumulate::add_accumulate(graph, pipelines, &hdr, mean, index);
+            mean.clone()
+        }
+        None => hdr,
+    };
+    let bloom = passes::bloom::add_bloom(graph, pipelines, &hdr, settings.bloom);
+    composite::add_composite(
+        graph,
+        pipelines,
+        &hdr,
+        bloom.as_ref(),
+        settings.bloom,
+        settings.post,
+        output == FrameOutput::HdrPost,
+    )
+}

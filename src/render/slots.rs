@@ -1,0 +1,137 @@
+//! Frame slots: everything one frame in flight needs of its own, so the CPU
+//! can record frame N + 1 while the GPU still runs frame N. A slot is reused
+//! only after its fence has signalled, and only then are its transient images,
+//! parameter buffer, timestamps and readback touched again.
+
+use std::sync::Arc;
+
+use ash::vk;
+use gpu_allocator::MemoryLocation;
+
+use crate::frame::{FrameTimings, PassTiming};
+use crate::graph::{self, Graph, TransientPool};
+use crate::passes::raymarch::RaymarchParams;
+use crate::vk::{Buffer, CommandContext, Gpu, TimestampPool};
+use crate::{Error, Result};
+
+/// Frames in flight in the window.
+pub const FRAMES_IN_FLIGHT: usize = 2;
+
+/// Most passes a frame can time.
+const MAX_TIMED_PASSES: u32 = 64;
+
+/// One frame in flight's own resources.
+pub struct FrameSlot {
+    /// Graph-owned images of this slot's frames; never shared with the other
+    /// slot, so one slot cannot overwrite what the other's frame still reads.
+    pub transients: TransientPool,
+    /// The host-written ray-march parameters of this slot's frame.
+    pub params: Buffer,
+    /// Where offscreen frames are copied for the host (grown on demand).
+    pub readback: Option<Buffer>,
+    pub timestamps: Option<TimestampPool>,
+    /// Names of the passes the last submission timed (read after the fence).
+    timed: Vec<String>,
+    /// Whether a submission is in flight whose timings are not read yet.
+    pending: bool,
+    pub commands: CommandContext,
+}
+
+impl FrameSlot {
+    /// Creates slot `index`'s command buffer, fence, parameter buffer and
+    /// timestamp pool (transients and readback come on first use).
+    pub fn new(gpu: &Arc<Gpu>, index: usize) -> Result<Self> {
+        Ok(FrameSlot {
+            transients: TransientPool::new(gpu),
+            params: Buffer::new(
+                gpu,
+                &format!("raymarch params (slot {index})"),
+                std::mem::size_of::<RaymarchParams>() as u64,
+                vk::BufferUsageFlags::UNIFORM_BUFFER,
+                MemoryLocation::CpuToGpu,
+            )?,
+            readback: None,
+            timestamps: TimestampPool::new(gpu, 2 * MAX_TIMED_PASSES)?,
+            timed: Vec::new(),
+            pending: false,
+            commands: CommandContext::new(gpu)?,
+        })
+    }
+
+    /// Waits for this slot's last frame and returns its GPU timings (None if
+    /// nothing was submitted since the last call). After this the slot's
+    /// resources are free to reuse.
+    pub fn wait(&mut self) -> Result<Option<FrameTimings>> {
+        self.commands.wait()?;
+        if !self.pending {
+            return Ok(None);
+        }
+        self.pending = false;
+        self.read_timings().map(Some)
+    }
+
+    /// Makes sure the readback buffer holds at least `needed` bytes (the slot
+    /// must be idle).
+    pub fn ensure_readback(&mut self, gpu: &Arc<Gpu>, needed: u64) -> Result<&Buffer> {
+        if self.readback.as_ref().is_none_or(|b| b.size < needed) {
+            self.readback = None;
+            self.readback = Some(Buffer::new(
+                gpu,
+                "readback",
+                needed,
+                vk::BufferUsageFlags::TRANSFER_DST,
+                MemoryLocation::GpuToCpu,
+            )?);
+        }
+        self.readback
+            .as_ref()
+            .ok_or_else(|| Error::Other("readback buffer missing".into()))
+    }
+
+    /// Compiles `g`, records it into this slot's command buffer (waiting for
+    /// the slot's previous frame first) and submits it with the given
+    /// semaphores. Does not wait for it.
+    pub fn submit(
+        &mut self,
+        gpu: &Gpu,
+        g: Graph<'_>,
+        waits: &[(vk::Semaphore, vk::PipelineStageFlags2)],
+        signals: &[vk::Semaphore],
+    ) -> Result<()> {
+        let compiled = g.compile()?;
+        let cmd = self.commands.begin()?;
+        self.timed = graph::execute::execute(
+            g,
+            &compiled,
+            gpu,
+            cmd,
+            &mut self.transients,
+            self.timestamps.as_ref(),
+        )?;
+        self.commands.submit(waits, signals)?;
+        self.pending = true;
+        Ok(())
+    }
+
+    fn read_timings(&self) -> Result<FrameTimings> {
+        let Some(ts) = &self.timestamps else {
+            return Ok(FrameTimings::default());
+        };
+        let count = graph::execute::timestamp_count(self.timed.len());
+        if count > ts.capacity {
+            return Ok(FrameTimings::default());
+        }
+        let ns = ts.read_ns(count)?;
+        let passes = self
+            .timed
+            .iter()
+            .enumerate()
+            .map(|(i, n)| PassTiming {
+                name: n.clone(),
+                ms: (ns[2 * i + 1] - ns[2 * i]) * 1e-6,
+            })
+            .collect();
+        let frame_ms = ns.last().copied().unwrap_or(0.0) * 1e-6;
+        Ok(FrameTimings { passes, frame_ms })
+    }
+}

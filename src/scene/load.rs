@@ -1,0 +1,161 @@
+//! Loading scenes: TOML files, built-in presets, messages that name the file,
+//! the line, the key and the value.
+
+use std::path::Path;
+
+use glam::DVec3;
+
+use super::locate;
+use super::{Scene, SkyKind};
+use crate::{Error, Result};
+
+/// Built-in presets: name, one-line description, TOML source.
+pub const PRESETS: &[(&str, &str, &str)] = &[
+    (
+        "default",
+        "one hole, physical thin disk seen from just above its plane, stars",
+        include_str!("presets/default.toml"),
+    ),
+    (
+        "interstellar",
+        "the film look: volumetric disk, colour map, no Doppler or redshift",
+        include_str!("presets/interstellar.toml"),
+    ),
+    (
+        "doppler",
+        "the thin disk from higher up: Doppler and gravitational shifts on",
+        include_str!("presets/doppler.toml"),
+    ),
+    (
+        "grid",
+        "no disk, a checker sky: lensing made plain",
+        include_str!("presets/grid.toml"),
+    ),
+    (
+        "binary",
+        "two holes, accelerations summed (an approximation), checker sky",
+        include_str!("presets/binary.toml"),
+    ),
+    (
+        "edge-on",
+        "the camera a hair above the disk's plane",
+        include_str!("presets/edge-on.toml"),
+    ),
+    (
+        "no-gravity",
+        "the default scene with straight rays",
+        include_str!("presets/no-gravity.toml"),
+    ),
+    (
+        "top-down",
+        "looking down the disk's axis",
+        include_str!("presets/top-down.toml"),
+    ),
+];
+
+/// Names of the built-in presets, for `--help`.
+pub fn preset_names() -> Vec<&'static str> {
+    PRESETS.iter().map(|p| p.0).collect()
+}
+
+impl Scene {
+    /// The scene at frame `index` of its animation (the camera moved).
+    pub fn at_frame(&self, index: u64) -> Scene {
+        let t = self.animation.time_of(index);
+        Scene {
+            camera: self.animation.camera_at(&self.camera, t),
+            time: t,
+            ..self.clone()
+        }
+    }
+
+    /// Parses and validates TOML; `origin` names the file in messages.
+    pub fn from_toml(src: &str, origin: &str) -> Result<Self> {
+        let scene: Scene = toml::from_str(src).map_err(|e| {
+            let line = e.span().map(|s| locate::line_of(src, s.start));
+            let msg = e.message().trim().replace('\n', " ");
+            let context = e
+                .span()
+                .and_then(|s| locate::line_text(src, s.start))
+                .map(|t| format!(" (in `{t}`)"))
+                .unwrap_or_default();
+            match line {
+                Some(l) => Error::Scene(format!("{origin}:{l}: {msg}{context}")),
+                None => Error::Scene(format!("{origin}: {msg}")),
+            }
+        })?;
+        scene.validate().map_err(|(path, value, why)| {
+            let line = locate::line_of_key(src, &path)
+                .map(|l| format!(":{l}"))
+                .unwrap_or_default();
+            let key = locate::display_path(&path);
+            Error::Scene(format!("{origin}{line}: {key} = {value}: {why}"))
+        })?;
+        Ok(scene)
+    }
+
+    /// Loads a scene file, or a built-in preset by name.
+    pub fn load(name_or_path: &str) -> Result<Self> {
+        let path = Path::new(name_or_path);
+        if path.exists() {
+            let src = std::fs::read_to_string(path).map_err(|source| Error::Io {
+                path: path.to_owned(),
+                source,
+            })?;
+            let mut scene = Self::from_toml(&src, name_or_path)?;
+            scene.base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+            scene.check_files(&src, name_or_path)?;
+            return Ok(scene);
+        }
+        if let Some((name, _, src)) = PRESETS.iter().find(|p| p.0 == name_or_path) {
+            return Self::from_toml(src, &format!("preset `{name}`"));
+        }
+        Err(Error::Scene(format!(
+            "no scene file or preset named `{name_or_path}` (presets: {})",
+            preset_names().join(", ")
+        )))
+    }
+
+    /// Checks that the files the scene names exist (decoding comes later).
+    fn check_files(&self, src: &str, origin: &str) -> Result<()> {
+        use locate::Seg::Key;
+        let key = if self.sky.kind == SkyKind::Image {
+            "image"
+        } else {
+            "cubemap"
+        };
+        for f in self.sky.files(&self.base_dir) {
+            if !f.is_file() {
+                let line = locate::line_of_key(src, &[Key("sky"), Key(key)])
+                    .map(|l| format!(":{l}"))
+                    .unwrap_or_default();
+                return Err(Error::Scene(format!(
+                    "{origin}{line}: sky.{key}: cannot read {}: no such file",
+                    f.display()
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// The built-in default scene.
+    pub fn builtin_default() -> Result<Self> {
+        Self::load("default")
+    }
+
+    /// The radius past which rays count as escaped: beyond the camera and the
+    /// disk by a wide margin, unless the scene sets one.
+    pub fn escape_radius(&self) -> f64 {
+        if self.quality.escape_radius > 0.0 {
+            return self.quality.escape_radius;
+        }
+        let cam = DVec3::from(self.camera.position);
+        let far = self
+            .black_holes
+            .iter()
+            .map(|h| (cam - DVec3::from(h.position)).length() / h.rs)
+            .fold(0.0, f64::max);
+        let max_rs = self.black_holes.iter().map(|h| h.rs).fold(0.0, f64::max);
+        (2.0 * far.max(self.disk.outer_radius / max_rs)).max(100.0) * max_rs
+    }
+}

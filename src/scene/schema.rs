@@ -1,0 +1,404 @@
+//! The scene schema: every TOML section as a serde struct with the defaults
+//! of the built-in scene (omitted keys take them).
+
+use std::path::Path;
+
+use glam::DVec3;
+use serde::Deserialize;
+
+use super::animation::Animation;
+
+/// Camera (the binding convention in the README): `position`, `look_at`, `up`, `vfov_deg`.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Camera {
+    pub position: [f64; 3],
+    pub look_at: [f64; 3],
+    pub up: [f64; 3],
+    pub vfov_deg: f64,
+}
+
+impl Default for Camera {
+    fn default() -> Self {
+        Camera {
+            position: [0.0, 0.8, -15.0],
+            look_at: [0.0; 3],
+            up: [0.0, 1.0, 0.0],
+            vfov_deg: 60.0,
+        }
+    }
+}
+
+/// An orthonormal camera frame, by the binding convention.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CameraFrame {
+    pub position: DVec3,
+    pub forward: DVec3,
+    pub right: DVec3,
+    pub up: DVec3,
+    /// tan(vfov / 2).
+    pub tan_half_fov: f64,
+}
+
+impl Camera {
+    /// `forward = normalize(look_at - position)`, `right = normalize(cross(up,
+    /// forward))`, `cam_up = cross(forward, right)`.
+    pub fn frame(&self) -> CameraFrame {
+        let position = DVec3::from(self.position);
+        let forward = (DVec3::from(self.look_at) - position).normalize();
+        let right = DVec3::from(self.up).cross(forward).normalize();
+        let up = forward.cross(right);
+        CameraFrame {
+            position,
+            forward,
+            right,
+            up,
+            tan_half_fov: (self.vfov_deg.to_radians() * 0.5).tan(),
+        }
+    }
+}
+
+impl CameraFrame {
+    /// The unit direction of the ray through the centre of pixel (`col`, `row`)
+    /// of a `width` x `height` image, row 0 at the top.
+    pub fn ray_dir(&self, col: u32, row: u32, width: u32, height: u32) -> DVec3 {
+        let aspect = f64::from(width) / f64::from(height);
+        let sx =
+            (2.0 * (f64::from(col) + 0.5) / f64::from(width) - 1.0) * self.tan_half_fov * aspect;
+        let sy = (1.0 - 2.0 * (f64::from(row) + 0.5) / f64::from(height)) * self.tan_half_fov;
+        (self.forward + sx * self.right + sy * self.up).normalize()
+    }
+}
+
+/// One Schwarzschild hole.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct BlackHole {
+    pub position: [f64; 3],
+    /// Schwarzschild radius (= 2M in G = c = 1), the unit of every length.
+    pub rs: f64,
+    /// Mass in solar masses, for display only (r_s = 2.953 km per solar mass).
+    pub mass_solar: Option<f64>,
+}
+
+impl Default for BlackHole {
+    fn default() -> Self {
+        BlackHole {
+            position: [0.0; 3],
+            rs: 1.0,
+            mass_solar: None,
+        }
+    }
+}
+
+/// What kind of disk surrounds the (first) hole.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum DiskKind {
+    Thin,
+    Volumetric,
+    None,
+}
+
+/// The accretion disk, centred on the first hole.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Disk {
+    pub kind: DiskKind,
+    pub normal: [f64; 3],
+    pub inner_radius: f64,
+    pub outer_radius: f64,
+    /// Emission scale (luminance of the hottest ring, seen unshifted).
+    pub brightness: f64,
+    /// Temperature of the hottest ring, kelvin (Novikov-Thorne profile).
+    pub temperature_k: f64,
+    /// Volumetric disk: half-thickness.
+    pub height: f64,
+    /// Volumetric disk: exponent of the fall of density with height.
+    pub density_v: f64,
+    /// Volumetric disk: exponent of the fall of density with radius.
+    pub density_h: f64,
+    /// Volumetric disk: spatial frequency of the noise (per rs).
+    pub noise_scale: f64,
+    /// Volumetric disk: octaves of noise (1 to 8).
+    pub noise_octaves: u32,
+    /// Volumetric disk: how fast the gas turns (x Keplerian; time from [animation]).
+    pub speed: f64,
+    /// Volumetric disk: emission scale.
+    pub lit: f64,
+    /// Volumetric disk colour: the blackbody of the physical disk (with its
+    /// shifts), or a film-like colour map.
+    pub color: VolumeColor,
+}
+
+/// How the volumetric disk is coloured.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum VolumeColor {
+    Blackbody,
+    Colormap,
+}
+
+impl Default for Disk {
+    fn default() -> Self {
+        Disk {
+            kind: DiskKind::Thin,
+            normal: [0.0, 1.0, 0.0],
+            inner_radius: 3.0,
+            outer_radius: 12.0,
+            brightness: 1.2,
+            temperature_k: 6000.0,
+            height: 0.5,
+            density_v: 2.0,
+            density_h: 1.5,
+            noise_scale: 0.8,
+            noise_octaves: 4,
+            speed: 1.0,
+            lit: 1.0,
+            color: VolumeColor::Blackbody,
+        }
+    }
+}
+
+/// What kind of sky escaped rays see.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SkyKind {
+    /// Procedural stars and a faint galaxy band.
+    Stars,
+    /// Checker squares on the celestial sphere (shows lensing clearly).
+    Checker,
+    /// An equirectangular panorama from `image`.
+    Image,
+    /// Six cube-map faces from `cubemap` (+x, -x, +y, -y, +z, -z).
+    Cubemap,
+    Black,
+}
+
+/// The sky (celestial sphere).
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Sky {
+    pub kind: SkyKind,
+    /// Checker squares around the equator.
+    pub squares: u32,
+    /// Chance that a star cell holds a star (0 to 1).
+    pub star_density: f64,
+    /// Brightness of the galaxy band (stars sky).
+    pub galaxy: f64,
+    pub brightness: f64,
+    /// Panorama file (PNG, JPEG, HDR, EXR), relative to the scene file.
+    pub image: Option<String>,
+    /// Six face files, +x, -x, +y, -y, +z, -z, relative to the scene file.
+    pub cubemap: Option<Vec<String>>,
+}
+
+impl Sky {
+    /// The files an image or cube-map sky reads, resolved against `base`.
+    pub fn files(&self, base: &Path) -> Vec<std::path::PathBuf> {
+        match self.kind {
+            SkyKind::Image => self.image.iter().map(|f| base.join(f)).collect(),
+            SkyKind::Cubemap => self
+                .cubemap
+                .iter()
+                .flatten()
+                .map(|f| base.join(f))
+                .collect(),
+            _ => Vec::new(),
+        }
+    }
+}
+
+impl Default for Sky {
+    fn default() -> Self {
+        Sky {
+            kind: SkyKind::Stars,
+            squares: 24,
+            star_density: 0.5,
+            galaxy: 0.02,
+            brightness: 1.0,
+            image: None,
+            cubemap: None,
+        }
+    }
+}
+
+/// The first seed's grid plane behind the hole.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct GridPlane {
+    pub enabled: bool,
+    /// A point on the plane (its centre).
+    pub position: [f64; 3],
+    /// Normal, facing the camera.
+    pub normal: [f64; 3],
+    /// Distance between grid lines.
+    pub spacing: f64,
+    /// Half the side of the square.
+    pub size: f64,
+}
+
+impl Default for GridPlane {
+    fn default() -> Self {
+        GridPlane {
+            enabled: false,
+            position: [0.0, 0.0, 40.0],
+            normal: [0.0, 0.0, -1.0],
+            spacing: 2.0,
+            size: 60.0,
+        }
+    }
+}
+
+/// Integration quality.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Quality {
+    /// Step budget per ray.
+    pub steps: u32,
+    /// Local error tolerance of the adaptive integrator.
+    pub tolerance: f64,
+    /// Radius (from each hole) past which a ray has escaped; 0 = automatic.
+    pub escape_radius: f64,
+}
+
+impl Default for Quality {
+    fn default() -> Self {
+        Quality {
+            steps: 4000,
+            tolerance: 1e-5,
+            escape_radius: 0.0,
+        }
+    }
+}
+
+/// Physics switches: the film look (Doppler and redshift off) and the
+/// physical look are one switch apart.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Physics {
+    /// Bend light (off: straight rays; the horizon still absorbs).
+    pub gravity: bool,
+    /// Doppler shift and beaming of the orbiting disk.
+    pub doppler: bool,
+    /// Gravitational redshift of the disk's light.
+    pub gravitational_redshift: bool,
+}
+
+impl Default for Physics {
+    fn default() -> Self {
+        Physics {
+            gravity: true,
+            doppler: true,
+            gravitational_redshift: true,
+        }
+    }
+}
+
+/// The tone curve of the 8-bit output.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Tonemap {
+    /// Stephen Hill's RRT+ODT fit of ACES (the fuller one).
+    AcesHill,
+    /// Krzysztof Narkowicz's one-line ACES fit.
+    AcesNarkowicz,
+    /// Clamp only (for checking values).
+    Linear,
+}
+
+/// Post-processing.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Post {
+    /// Exposure in EV stops (x 2^ev before tone mapping).
+    pub exposure_ev: f64,
+    pub tonemap: Tonemap,
+    /// Triangular dither of +-1 step in the 8-bit output.
+    pub dither: bool,
+}
+
+impl Default for Post {
+    fn default() -> Self {
+        Post {
+            exposure_ev: 0.0,
+            tonemap: Tonemap::AcesHill,
+            dither: true,
+        }
+    }
+}
+
+/// The bloom mip chain.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Bloom {
+    /// How much of the blurred bright light is added (0: no bloom, no passes).
+    pub strength: f64,
+    /// Brightest-channel value above which light blooms.
+    pub threshold: f64,
+    /// Width of the soft knee around the threshold.
+    pub knee: f64,
+    /// Mip levels of the chain, 1 to 8 (each halves the size).
+    pub levels: u32,
+    /// Tent radius of the upsample, in texels of the smaller level.
+    pub radius: f64,
+}
+
+impl Default for Bloom {
+    fn default() -> Self {
+        Bloom {
+            strength: 0.6,
+            threshold: 1.0,
+            knee: 0.5,
+            levels: 6,
+            radius: 1.0,
+        }
+    }
+}
+
+/// A whole scene. Every section is optional; omitted keys take the values of
+/// the built-in default scene.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Scene {
+    pub camera: Camera,
+    #[serde(rename = "black_hole")]
+    pub black_holes: Vec<BlackHole>,
+    pub disk: Disk,
+    pub sky: Sky,
+    #[serde(rename = "grid_plane")]
+    pub plane: GridPlane,
+    pub quality: Quality,
+    pub physics: Physics,
+    pub bloom: Bloom,
+    pub post: Post,
+    pub animation: Animation,
+    /// Seconds since the start of the animation (set per frame, not read from TOML).
+    #[serde(skip)]
+    pub time: f64,
+    /// Folder that relative file names in the scene are resolved against.
+    #[serde(skip)]
+    pub base_dir: std::path::PathBuf,
+}
+
+impl Default for Scene {
+    fn default() -> Self {
+        Scene {
+            camera: Camera::default(),
+            black_holes: vec![BlackHole::default()],
+            disk: Disk::default(),
+            sky: Sky::default(),
+            plane: GridPlane::default(),
+            quality: Quality::default(),
+            physics: Physics::default(),
+            bloom: Bloom::default(),
+            post: Post::default(),
+            animation: Animation::default(),
+            time: 0.0,
+            base_dir: std::path::PathBuf::new(),
+        }
+    }
+}
+
+/// Most holes one scene may have (the shader's fixed array).
+pub const MAX_HOLES: usize = 8;

@@ -1,0 +1,279 @@
+//! Validation of the values serde cannot check: each rule is one line built
+//! from a few helpers, and a failure names the key path, the value and why.
+
+use glam::DVec3;
+
+use super::locate::Seg::{self, Idx, Key};
+use super::{CameraPath, DiskKind, MAX_HOLES, Scene, SkyKind};
+
+/// A rejected value: its key path, the value as written, and the reason.
+pub type Invalid = (Vec<Seg>, String, String);
+type Check = std::result::Result<(), Invalid>;
+
+fn fail(path: &[Seg], value: impl std::fmt::Display, why: impl Into<String>) -> Check {
+    Err((path.to_vec(), value.to_string(), why.into()))
+}
+
+/// `ok`, or the failure.
+fn rule(ok: bool, path: &[Seg], value: impl std::fmt::Display, why: impl Into<String>) -> Check {
+    if ok { Ok(()) } else { fail(path, value, why) }
+}
+
+fn vec3(v: &[f64; 3]) -> String {
+    format!("[{}, {}, {}]", v[0], v[1], v[2])
+}
+
+fn finite3(path: &[Seg], v: &[f64; 3]) -> Check {
+    rule(
+        v.iter().all(|x| x.is_finite()),
+        path,
+        vec3(v),
+        "must be finite numbers",
+    )
+}
+
+fn direction(path: &[Seg], v: &[f64; 3]) -> Check {
+    rule(
+        v.iter().all(|x| x.is_finite()) && DVec3::from(*v).length() >= 1e-9,
+        path,
+        vec3(v),
+        "must be a finite, non-zero vector",
+    )
+}
+
+fn finite(path: &[Seg], v: f64) -> Check {
+    rule(v.is_finite(), path, v, "must be a finite number")
+}
+
+fn positive(path: &[Seg], v: f64) -> Check {
+    rule(
+        v.is_finite() && v > 0.0,
+        path,
+        v,
+        "must be a finite number > 0",
+    )
+}
+
+fn non_negative(path: &[Seg], v: f64) -> Check {
+    rule(
+        v.is_finite() && v >= 0.0,
+        path,
+        v,
+        "must be a finite number >= 0",
+    )
+}
+
+fn count_in(path: &[Seg], v: u32, lo: u32, hi: u32) -> Check {
+    rule(
+        (lo..=hi).contains(&v),
+        path,
+        v,
+        format!("must be {lo} to {hi}"),
+    )
+}
+
+impl Scene {
+    /// Checks every value; the first failure as (key path, value, reason).
+    pub(super) fn validate(&self) -> Check {
+        self.validate_camera_and_holes()?;
+        self.validate_disk()?;
+        self.validate_sky_and_plane()?;
+        self.validate_rendering()?;
+        self.validate_animation()
+    }
+
+    fn validate_camera_and_holes(&self) -> Check {
+        let c = &self.camera;
+        finite3(&[Key("camera"), Key("position")], &c.position)?;
+        finite3(&[Key("camera"), Key("look_at")], &c.look_at)?;
+        finite3(&[Key("camera"), Key("up")], &c.up)?;
+        rule(
+            c.vfov_deg > 0.0 && c.vfov_deg < 180.0,
+            &[Key("camera"), Key("vfov_deg")],
+            c.vfov_deg,
+            "must be in (0, 180) degrees",
+        )?;
+        let fwd = DVec3::from(c.look_at) - DVec3::from(c.position);
+        rule(
+            fwd.length() >= 1e-9,
+            &[Key("camera"), Key("look_at")],
+            vec3(&c.look_at),
+            "must differ from camera.position",
+        )?;
+        rule(
+            DVec3::from(c.up).cross(fwd.normalize()).length() >= 1e-6,
+            &[Key("camera"), Key("up")],
+            vec3(&c.up),
+            "must not be zero or parallel to the view direction",
+        )?;
+
+        let n = self.black_holes.len();
+        rule(
+            n > 0,
+            &[Key("black_hole")],
+            "[]",
+            "at least one black hole is needed",
+        )?;
+        rule(
+            n <= MAX_HOLES,
+            &[Key("black_hole")],
+            format!("{n} entries"),
+            format!("at most {MAX_HOLES} black holes are supported"),
+        )?;
+        for (i, h) in self.black_holes.iter().enumerate() {
+            let key = |k| [Key("black_hole"), Idx(i), Key(k)];
+            finite3(&key("position"), &h.position)?;
+            positive(&key("rs"), h.rs)?;
+            if let Some(m) = h.mass_solar {
+                positive(&key("mass_solar"), m)?;
+            }
+            rule(
+                (DVec3::from(c.position) - DVec3::from(h.position)).length() > h.rs,
+                &[Key("camera"), Key("position")],
+                vec3(&c.position),
+                format!("is inside the horizon of black_hole[{i}]"),
+            )?;
+        }
+        Ok(())
+    }
+
+    fn validate_disk(&self) -> Check {
+        let d = &self.disk;
+        let key = |k| [Key("disk"), Key(k)];
+        direction(&key("normal"), &d.normal)?;
+        non_negative(&key("inner_radius"), d.inner_radius)?;
+        rule(
+            d.outer_radius.is_finite() && d.outer_radius > d.inner_radius,
+            &key("outer_radius"),
+            d.outer_radius,
+            format!(
+                "must be finite and greater than inner_radius ({})",
+                d.inner_radius
+            ),
+        )?;
+        non_negative(&key("brightness"), d.brightness)?;
+        rule(
+            d.temperature_k.is_finite() && d.temperature_k > 0.0,
+            &key("temperature_k"),
+            d.temperature_k,
+            "must be a finite temperature > 0 kelvin",
+        )?;
+        positive(&key("height"), d.height)?;
+        positive(&key("noise_scale"), d.noise_scale)?;
+        non_negative(&key("density_v"), d.density_v)?;
+        non_negative(&key("density_h"), d.density_h)?;
+        non_negative(&key("lit"), d.lit)?;
+        finite(&key("speed"), d.speed)?;
+        count_in(&key("noise_octaves"), d.noise_octaves, 1, 8)?;
+        rule(
+            d.kind != DiskKind::Volumetric || d.inner_radius > 0.0,
+            &key("inner_radius"),
+            d.inner_radius,
+            "must be > 0 for a volumetric disk",
+        )
+    }
+
+    fn validate_sky_and_plane(&self) -> Check {
+        let s = &self.sky;
+        let key = |k| [Key("sky"), Key(k)];
+        rule(
+            s.kind != SkyKind::Image || s.image.is_some(),
+            &key("kind"),
+            "\"image\"",
+            "needs sky.image = \"panorama file\"",
+        )?;
+        rule(
+            s.kind != SkyKind::Cubemap || s.cubemap.as_ref().is_some_and(|c| c.len() == 6),
+            &key("kind"),
+            "\"cubemap\"",
+            "needs sky.cubemap = [six files: +x, -x, +y, -y, +z, -z]",
+        )?;
+        rule(
+            s.star_density.is_finite() && (0.0..=1.0).contains(&s.star_density),
+            &key("star_density"),
+            s.star_density,
+            "must be in [0, 1]",
+        )?;
+        non_negative(&key("galaxy"), s.galaxy)?;
+        rule(s.squares > 0, &key("squares"), 0, "must be at least 1")?;
+        non_negative(&key("brightness"), s.brightness)?;
+
+        let gp = &self.plane;
+        let key = |k| [Key("grid_plane"), Key(k)];
+        finite3(&key("position"), &gp.position)?;
+        direction(&key("normal"), &gp.normal)?;
+        positive(&key("spacing"), gp.spacing)?;
+        positive(&key("size"), gp.size)
+    }
+
+    fn validate_rendering(&self) -> Check {
+        let q = &self.quality;
+        let key = |k| [Key("quality"), Key(k)];
+        rule(q.steps > 0, &key("steps"), 0, "must be at least 1")?;
+        rule(
+            q.tolerance.is_finite() && q.tolerance > 0.0 && q.tolerance < 1.0,
+            &key("tolerance"),
+            q.tolerance,
+            "must be in (0, 1)",
+        )?;
+        rule(
+            q.escape_radius.is_finite() && q.escape_radius >= 0.0,
+            &key("escape_radius"),
+            q.escape_radius,
+            "must be a finite number >= 0 (0 = automatic)",
+        )?;
+
+        let b = &self.bloom;
+        let key = |k| [Key("bloom"), Key(k)];
+        non_negative(&key("strength"), b.strength)?;
+        non_negative(&key("threshold"), b.threshold)?;
+        non_negative(&key("knee"), b.knee)?;
+        count_in(&key("levels"), b.levels, 1, 8)?;
+        positive(&key("radius"), b.radius)?;
+        finite(&[Key("post"), Key("exposure_ev")], self.post.exposure_ev)
+    }
+
+    fn validate_animation(&self) -> Check {
+        let a = &self.animation;
+        let key = |k| [Key("animation"), Key(k)];
+        positive(&key("fps"), a.fps)?;
+        rule(
+            a.orbit_radius.is_finite() && a.orbit_radius >= 0.0,
+            &key("orbit_radius"),
+            a.orbit_radius,
+            "must be a finite number (radius >= 0)",
+        )?;
+        for (name, v) in [
+            ("orbit_speed_deg", a.orbit_speed_deg),
+            ("inclination_deg", a.inclination_deg),
+        ] {
+            rule(
+                v.is_finite(),
+                &key(name),
+                v,
+                "must be a finite number (radius >= 0)",
+            )?;
+        }
+        rule(
+            a.inclination_deg.abs() < 90.0,
+            &key("inclination_deg"),
+            a.inclination_deg,
+            "must be between -90 and 90 (the camera's up is +y)",
+        )?;
+        rule(
+            a.camera != CameraPath::Keyframes || !a.keyframes.is_empty(),
+            &key("camera"),
+            "\"keyframes\"",
+            "needs at least one [[animation.keyframe]]",
+        )?;
+        for (i, k) in a.keyframes.iter().enumerate() {
+            rule(
+                k.time.is_finite() && (i == 0 || k.time > a.keyframes[i - 1].time),
+                &[Key("animation"), Key("keyframe"), Idx(i), Key("time")],
+                k.time,
+                "keyframe times must be finite and increasing",
+            )?;
+        }
+        Ok(())
+    }
+}
