@@ -1,5 +1,8 @@
-// Uniform parameters of the ray march. Mirrored by `RaymarchParams` in
-// src/passes/raymarch.rs; a test checks the two layouts agree (std140, all vec4).
+// Parameters of the ray march, one block per frame written by the host.
+// Mirrored by `RaymarchParams` in src/passes/raymarch.rs; a test checks the
+// two layouts agree (all vec4, so std430 and std140 lay it out alike). A
+// read-only storage buffer rather than a uniform buffer: see RAYMARCH_BINDINGS
+// in src/passes/mod.rs for the driver leak that avoids.
 #ifndef PARAMS_GLSL
 #define PARAMS_GLSL
 
@@ -20,7 +23,7 @@
 #define LUT_MIN_K 500.0
 #define LUT_MAX_K 100000.0
 
-layout(std140, binding = 1) uniform RaymarchParams {
+layout(std430, binding = 1) readonly buffer RaymarchParams {
     vec4 cam_pos;      // xyz: camera position; w: tan(vfov / 2)
     vec4 cam_right;    // xyz: right;           w: aspect (W / H)
     vec4 cam_up;       // xyz: camera up;       w: sub-pixel jitter x (pixels, 0 = centre)

@@ -44,8 +44,8 @@ pub enum RaymarchOutput {
     Geodesic,
 }
 
-/// Uniform block of the ray march. Mirrors `RaymarchParams` in
-/// shaders/include/params.glsl (std140; every member a 16-byte vec4).
+/// Parameter block of the ray march (a read-only storage buffer). Mirrors
+/// `RaymarchParams` in shaders/include/params.glsl (every member a 16-byte vec4).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 pub struct RaymarchParams {
@@ -185,7 +185,7 @@ impl RaymarchParams {
 
 /// What the ray march reads: the host-written parameter block and the images.
 pub struct RaymarchInputs<'h> {
-    /// The [`RaymarchParams`] uniform buffer, written by the host this frame.
+    /// The [`RaymarchParams`] buffer, written by the host this frame.
     pub params: &'h BufferHandle,
     pub disk_lut: &'h ImageHandle,
     /// The image sky; the colour table again when the sky is not an image
@@ -232,7 +232,7 @@ pub fn add_raymarch<'a>(
     let (out, lut, sky_tex, ubo) = (hdr.clone(), disk_lut.clone(), sky.clone(), params.clone());
     let mut pass = graph
         .add_pass("raymarch")
-        .read_buffer(params, Access::ComputeUniformRead)
+        .read_buffer(params, Access::ComputeStorageRead)
         .read(disk_lut, Access::ComputeSampledRead, Mips::ALL);
     if sky != disk_lut {
         pass = pass.read(sky, Access::ComputeSampledRead, Mips::ALL);
@@ -244,7 +244,7 @@ pub fn add_raymarch<'a>(
                 pipeline,
                 &[
                     Descriptor::StorageImage(ctx.view(&out, 0)),
-                    Descriptor::UniformBuffer(ctx.buffer(&ubo)),
+                    Descriptor::StorageBuffer(ctx.buffer(&ubo)),
                     Descriptor::SampledImage(ctx.full_view(&lut), pipelines.linear_clamp.sampler),
                     Descriptor::SampledImage(
                         ctx.full_view(&sky_tex),

@@ -334,23 +334,30 @@ impl Renderer {
         frame
     }
 
+    /// Waits for the frame slot the next windowed frame will use (call it
+    /// before acquiring a swapchain image, so the slot's acquire semaphore is
+    /// free again); returns that slot's last frame's GPU timings.
+    pub fn begin_window_frame(&mut self) -> Result<Option<FrameTimings>> {
+        self.slots[self.next_slot].wait()
+    }
+
     /// Draws `scene` onto a swapchain image (the window): the frame recipe at
-    /// `view.render_size`, a blit onto the image, then the overlay. Uses the
-    /// next frame slot, waiting only for that slot's previous frame, whose
-    /// GPU timings it returns.
+    /// `view.render_size`, a blit onto the image, then the overlay, in the
+    /// slot [`Renderer::begin_window_frame`] waited for. Does not wait for
+    /// the GPU.
     pub fn draw_to_swapchain(
         &mut self,
         scene: &Scene,
         view: ViewOptions,
         target: SwapchainTarget<'_>,
-    ) -> Result<Option<FrameTimings>> {
+    ) -> Result<()> {
         let (w, h) = view.render_size;
         self.check_size(w, h)?;
         self.check_size(target.desc.width, target.desc.height)?;
         self.prepare_scene(scene)?;
         let slot_index = self.next_slot;
         self.next_slot = (self.next_slot + 1) % self.slots.len();
-        let timings = self.slots[slot_index].wait()?;
+        self.slots[slot_index].wait()?;
         self.write_params(slot_index, scene, view.render_size, view.jitter)?;
 
         // The running mean follows the render size; a new one starts over.
@@ -435,7 +442,7 @@ impl Renderer {
                 *state = Access::ComputeSampledRead;
             }
         }
-        Ok(timings)
+        Ok(())
     }
 }
 

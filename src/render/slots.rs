@@ -47,7 +47,7 @@ impl FrameSlot {
                 gpu,
                 &format!("raymarch params (slot {index})"),
                 std::mem::size_of::<RaymarchParams>() as u64,
-                vk::BufferUsageFlags::UNIFORM_BUFFER,
+                vk::BufferUsageFlags::STORAGE_BUFFER,
                 MemoryLocation::CpuToGpu,
             )?,
             readback: None,

@@ -8,7 +8,7 @@ use serde::Deserialize;
 use super::Camera;
 
 /// A camera keyframe.
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
 pub struct Keyframe {
     /// Seconds.
@@ -21,7 +21,7 @@ pub struct Keyframe {
 }
 
 /// How the camera moves.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum CameraPath {
     /// The `[camera]` as given, every frame.
@@ -34,7 +34,7 @@ pub enum CameraPath {
 }
 
 /// The `[animation]` section.
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Animation {
     pub fps: f64,

@@ -94,6 +94,20 @@ impl Scene {
         Ok(scene)
     }
 
+    /// Checks every value as a scene file's would be (for scenes edited in the
+    /// window's panel): `key = value: why` on failure.
+    pub fn check(&self) -> Result<()> {
+        self.validate().map_err(|(path, value, why)| {
+            Error::Scene(format!("{} = {value}: {why}", locate::display_path(&path)))
+        })
+    }
+
+    /// The scene as TOML (every key written), which [`Scene::from_toml`]
+    /// reads back to the same scene.
+    pub fn to_toml(&self) -> Result<String> {
+        toml::to_string(self).map_err(|e| Error::Scene(format!("writing the scene as TOML: {e}")))
+    }
+
     /// Loads a scene file, or a built-in preset by name.
     pub fn load(name_or_path: &str) -> Result<Self> {
         let path = Path::new(name_or_path);

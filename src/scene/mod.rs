@@ -27,6 +27,24 @@ mod tests {
     }
 
     #[test]
+    fn every_preset_round_trips_through_toml() {
+        for (name, _, _) in PRESETS {
+            let scene = Scene::load(name).expect("preset loads");
+            let text = scene.to_toml().expect("serializes");
+            let back = Scene::from_toml(&text, "saved").expect("reads back");
+            assert_eq!(back, scene, "{name}");
+        }
+    }
+
+    #[test]
+    fn check_names_the_key_of_an_impossible_edit() {
+        let mut scene = Scene::default();
+        scene.disk.outer_radius = 1.0;
+        let e = scene.check().unwrap_err().to_string();
+        assert!(e.contains("disk.outer_radius = 1"), "{e}");
+    }
+
+    #[test]
     fn negative_rs_names_key_value_and_line() {
         let src =
             "[camera]\nvfov_deg = 50.0\n\n[[black_hole]]\nposition = [0.0, 0.0, 0.0]\nrs = -1.0\n";

@@ -9,7 +9,7 @@ use serde::Deserialize;
 use super::animation::Animation;
 
 /// Camera (the binding convention in the README): `position`, `look_at`, `up`, `vfov_deg`.
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Camera {
     pub position: [f64; 3],
@@ -71,7 +71,7 @@ impl CameraFrame {
 }
 
 /// One Schwarzschild hole.
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct BlackHole {
     pub position: [f64; 3],
@@ -92,7 +92,7 @@ impl Default for BlackHole {
 }
 
 /// What kind of disk surrounds the (first) hole.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum DiskKind {
     Thin,
@@ -101,7 +101,7 @@ pub enum DiskKind {
 }
 
 /// The accretion disk, centred on the first hole.
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Disk {
     pub kind: DiskKind,
@@ -132,7 +132,7 @@ pub struct Disk {
 }
 
 /// How the volumetric disk is coloured.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum VolumeColor {
     Blackbody,
@@ -161,7 +161,7 @@ impl Default for Disk {
 }
 
 /// What kind of sky escaped rays see.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum SkyKind {
     /// Procedural stars and a faint galaxy band.
@@ -176,7 +176,7 @@ pub enum SkyKind {
 }
 
 /// The sky (celestial sphere).
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Sky {
     pub kind: SkyKind,
@@ -224,7 +224,7 @@ impl Default for Sky {
 }
 
 /// The first seed's grid plane behind the hole.
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct GridPlane {
     pub enabled: bool,
@@ -251,7 +251,7 @@ impl Default for GridPlane {
 }
 
 /// Integration quality.
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Quality {
     /// Step budget per ray.
@@ -274,7 +274,7 @@ impl Default for Quality {
 
 /// Physics switches: the film look (Doppler and redshift off) and the
 /// physical look are one switch apart.
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Physics {
     /// Bend light (off: straight rays; the horizon still absorbs).
@@ -296,7 +296,7 @@ impl Default for Physics {
 }
 
 /// The tone curve of the 8-bit output.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Tonemap {
     /// Stephen Hill's RRT+ODT fit of ACES (the fuller one).
@@ -308,7 +308,7 @@ pub enum Tonemap {
 }
 
 /// Post-processing.
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Post {
     /// Exposure in EV stops (x 2^ev before tone mapping).
@@ -329,7 +329,7 @@ impl Default for Post {
 }
 
 /// The bloom mip chain.
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Bloom {
     /// How much of the blurred bright light is added (0: no bloom, no passes).
@@ -358,7 +358,7 @@ impl Default for Bloom {
 
 /// A whole scene. Every section is optional; omitted keys take the values of
 /// the built-in default scene.
-#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Scene {
     pub camera: Camera,

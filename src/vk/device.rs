@@ -42,7 +42,11 @@ pub struct Gpu {
     pub debug_utils: Option<ext::debug_utils::Device>,
     /// VK_KHR_synchronization2 entry points on a 1.2 device; None on 1.3.
     sync2_khr: Option<khr::synchronization2::Device>,
-    allocator: ManuallyDrop<Mutex<Allocator>>,
+    /// Shared with the GUI renderer, which allocates its own buffers; both
+    /// are gone before the device (see the teardown order above).
+    allocator: ManuallyDrop<Arc<Mutex<Allocator>>>,
+    /// Whether the queue can present and the swapchain extension is on.
+    pub presents: bool,
     pub instance: Instance,
 }
 
@@ -68,11 +72,20 @@ struct Candidate {
     unusable: Option<String>,
 }
 
+/// Asks whether queue `family` of a device can present to the window's surface.
+pub type PresentCheck<'a> = &'a dyn Fn(&Instance, vk::PhysicalDevice, u32) -> bool;
+
 impl Gpu {
     /// Creates the instance and picks a device: discrete > integrated > virtual >
     /// CPU, or the first whose name contains `BLACKHOLE_DEVICE`.
     pub fn new(validation: Validation) -> Result<Arc<Self>> {
-        let instance = Instance::new(validation)?;
+        Self::open(Instance::new(validation)?, None)
+    }
+
+    /// Picks a device on `instance`. With `present`, the queue must also do
+    /// graphics (blits, the GUI) and present to the surface `present` asks
+    /// about, and the swapchain and dynamic rendering are enabled.
+    pub fn open(instance: Instance, present: Option<PresentCheck<'_>>) -> Result<Arc<Self>> {
         let inst = &instance.instance;
 
         // SAFETY: valid instance.
@@ -91,7 +104,7 @@ impl Gpu {
         }
         let mut candidates: Vec<Candidate> = physicals
             .iter()
-            .map(|&pd| Self::describe(&instance, pd))
+            .map(|&pd| Self::describe(&instance, pd, present))
             .collect::<Result<_>>()?;
 
         let wanted = std::env::var("BLACKHOLE_DEVICE")
@@ -131,6 +144,9 @@ impl Gpu {
 
         let is_13 = chosen.api_version >= vk::API_VERSION_1_3;
         let mut ext_names = vec![khr::push_descriptor::NAME.as_ptr()];
+        if present.is_some() {
+            ext_names.push(khr::swapchain::NAME.as_ptr());
+        }
         if !is_13 {
             ext_names.push(khr::synchronization2::NAME.as_ptr());
         }
@@ -138,7 +154,9 @@ impl Gpu {
         let queue_info = [vk::DeviceQueueCreateInfo::default()
             .queue_family_index(chosen.queue_family)
             .queue_priorities(&priorities)];
-        let mut f13 = vk::PhysicalDeviceVulkan13Features::default().synchronization2(true);
+        let mut f13 = vk::PhysicalDeviceVulkan13Features::default()
+            .synchronization2(true)
+            .dynamic_rendering(present.is_some());
         let mut sync2 =
             vk::PhysicalDeviceSynchronization2Features::default().synchronization2(true);
         let mut create = vk::DeviceCreateInfo::default()
@@ -199,12 +217,17 @@ impl Gpu {
             push_descriptor,
             debug_utils,
             sync2_khr,
-            allocator: ManuallyDrop::new(Mutex::new(allocator)),
+            allocator: ManuallyDrop::new(Arc::new(Mutex::new(allocator))),
+            presents: present.is_some(),
             instance,
         }))
     }
 
-    fn describe(instance: &Instance, pd: vk::PhysicalDevice) -> Result<Candidate> {
+    fn describe(
+        instance: &Instance,
+        pd: vk::PhysicalDevice,
+        present: Option<PresentCheck<'_>>,
+    ) -> Result<Candidate> {
         let inst = &instance.instance;
         // SAFETY: `pd` was enumerated from this instance.
         let props = unsafe { inst.get_physical_device_properties(pd) };
@@ -223,7 +246,15 @@ impl Gpu {
         };
         let queue = families
             .iter()
-            .position(|f| f.queue_flags.contains(vk::QueueFlags::COMPUTE));
+            .enumerate()
+            .position(|(i, f)| match present {
+                None => f.queue_flags.contains(vk::QueueFlags::COMPUTE),
+                Some(can_present) => {
+                    f.queue_flags
+                        .contains(vk::QueueFlags::COMPUTE | vk::QueueFlags::GRAPHICS)
+                        && can_present(instance, pd, i as u32)
+                }
+            });
         let api = props.api_version;
         let unusable = if api < vk::API_VERSION_1_2 {
             Some("Vulkan 1.2 or newer is needed".to_string())
@@ -231,6 +262,12 @@ impl Gpu {
             Some("VK_KHR_synchronization2 is missing".to_string())
         } else if !has(khr::push_descriptor::NAME) {
             Some("VK_KHR_push_descriptor is missing".to_string())
+        } else if present.is_some() && api < vk::API_VERSION_1_3 {
+            Some("the window needs Vulkan 1.3 (dynamic rendering)".to_string())
+        } else if present.is_some() && !has(khr::swapchain::NAME) {
+            Some("VK_KHR_swapchain is missing".to_string())
+        } else if queue.is_none() && present.is_some() {
+            Some("no queue that does graphics, compute and presents to the window".to_string())
         } else if queue.is_none() {
             Some("no compute queue".to_string())
         } else {
@@ -266,6 +303,12 @@ impl Gpu {
     /// The allocator, locked. Poisoning only follows a panic elsewhere.
     pub fn allocator(&self) -> MutexGuard<'_, Allocator> {
         self.allocator.lock().unwrap_or_else(|p| p.into_inner())
+    }
+
+    /// The allocator itself, for a library that allocates on its own (the
+    /// GUI renderer); it must be dropped before this `Gpu`.
+    pub fn shared_allocator(&self) -> Arc<Mutex<Allocator>> {
+        Arc::clone(&self.allocator)
     }
 
     /// Validation errors and warnings so far.
@@ -353,6 +396,9 @@ impl Drop for Gpu {
         unsafe {
             let _ = self.device.device_wait_idle();
             let allocator = ManuallyDrop::take(&mut self.allocator);
+            if Arc::strong_count(&allocator) > 1 {
+                log::warn!("the memory allocator is still shared at shutdown");
+            }
             let leaks = allocator
                 .lock()
                 .map(|a| a.generate_report().allocations.len())

@@ -92,6 +92,15 @@ unsafe extern "system" fn debug_callback(
 impl Instance {
     /// Loads Vulkan and creates the instance.
     pub fn new(validation: Validation) -> Result<Self> {
+        Self::with_extensions(validation, &[])
+    }
+
+    /// Loads Vulkan and creates the instance with `extra` extensions too (the
+    /// window's surface extensions).
+    pub fn with_extensions(
+        validation: Validation,
+        extra: &[*const std::ffi::c_char],
+    ) -> Result<Self> {
         // SAFETY: loading the system loader library; failure is reported, not UB.
         let entry = unsafe { ash::Entry::load() }.map_err(|e| Error::NoLoader(e.to_string()))?;
 
@@ -117,7 +126,7 @@ impl Instance {
                 .any(|e| e.extension_name_as_c_str().is_ok_and(|n| n == name))
         };
         let have_debug_utils = has_ext(ext::debug_utils::NAME) || validation_enabled;
-        let mut ext_names = Vec::new();
+        let mut ext_names = extra.to_vec();
         if have_debug_utils {
             ext_names.push(ext::debug_utils::NAME.as_ptr());
         }
