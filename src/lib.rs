@@ -13,6 +13,7 @@
 )]
 #![allow(clippy::too_many_arguments)]
 
+pub mod app;
 pub mod cli;
 pub mod error;
 pub mod frame;

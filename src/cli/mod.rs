@@ -56,6 +56,26 @@ pub fn load_scene(name: Option<&str>) -> Result<Scene, Error> {
 
 #[derive(Subcommand)]
 pub enum Command {
+    /// Open the real-time window: drag to orbit, wheel to zoom, a panel with
+    /// every parameter and the GPU time of each pass.
+    #[command(after_help = window_help())]
+    Window {
+        #[command(flatten)]
+        view: View,
+        /// Fraction of the window's size the ray march runs at (upscaled in the
+        /// composite), or `auto` to hold about 20 frames a second.
+        #[arg(long, default_value = "auto", value_parser = parse_scale)]
+        render_scale: RenderScale,
+        /// How frames reach the display.
+        #[arg(long, value_enum, default_value_t = Present::Fifo)]
+        present: Present,
+        /// Exit after N presented frames (for automated runs).
+        #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
+        frames: Option<u64>,
+        /// With --frames: write the last presented frame (panel included) as PNG.
+        #[arg(long, requires = "frames")]
+        screenshot: Option<PathBuf>,
+    },
     /// Render a still or a sequence offscreen to PNG (8-bit sRGB, tone-mapped) or EXR (linear HDR).
     #[command(after_help = presets_help())]
     Render {
@@ -130,6 +150,42 @@ fn presets_help() -> String {
     format!("Built-in presets (--scene NAME):\n{}", lines.join("\n"))
 }
 
+/// `--present`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Present {
+    /// Vsync (always available).
+    Fifo,
+    /// Vsync without blocking (falls back to fifo).
+    Mailbox,
+    /// No vsync (falls back to fifo).
+    Immediate,
+}
+
+/// `--render-scale`: a fraction in (0, 1], or automatic.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum RenderScale {
+    Fixed(f64),
+    Auto,
+}
+
+fn parse_scale(s: &str) -> Result<RenderScale, String> {
+    if s == "auto" {
+        return Ok(RenderScale::Auto);
+    }
+    match s.parse::<f64>() {
+        Ok(v) if v > 0.0 && v <= 1.0 => Ok(RenderScale::Fixed(v)),
+        _ => Err(format!("`{s}` is not `auto` or a number in (0, 1]")),
+    }
+}
+
+fn window_help() -> String {
+    format!(
+        "Controls: left drag orbits, wheel zooms, right drag pans; 1/2/3 front, top and free \
+         views; R resets; Space pauses; H hides the panel; F12 saves a PNG of the view; Esc quits.\n\n{}",
+        presets_help()
+    )
+}
+
 /// Runs a parsed command line; the exit code on success.
 pub fn run(cli: Cli) -> Result<ExitCode, Error> {
     match cli.command {
@@ -142,6 +198,28 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
         } => render::run(view, out, aov, frames, exr_post),
         Command::Trace { scene, out } => trace::run(scene.as_deref(), &out),
         Command::Profile { view, frames, json } => profile::run_command(view, frames, json),
+        Command::Window {
+            view,
+            render_scale,
+            present,
+            frames,
+            screenshot,
+        } => crate::app::run(crate::app::WindowOptions {
+            scene: load_scene(view.scene.as_deref())?,
+            width: view.width,
+            height: view.height,
+            render_scale: match render_scale {
+                RenderScale::Fixed(v) => Some(v),
+                RenderScale::Auto => None,
+            },
+            present: match present {
+                Present::Fifo => crate::vk::PresentMode::Fifo,
+                Present::Mailbox => crate::vk::PresentMode::Mailbox,
+                Present::Immediate => crate::vk::PresentMode::Immediate,
+            },
+            frames,
+            screenshot,
+        }),
     }
 }
 

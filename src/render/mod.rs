@@ -65,6 +65,8 @@ pub struct SwapchainTarget<'t> {
     /// Signalled when the frame is done; presentation waits on it.
     pub rendered: vk::Semaphore,
     pub overlay: Option<&'t mut dyn Overlay>,
+    /// Also copy the finished image to the host ([`Renderer::take_capture`]).
+    pub capture: bool,
 }
 
 /// The renderer. Fields drop in declaration order: frame slots and per-view
@@ -77,6 +79,8 @@ pub struct Renderer {
     /// The window's running mean for progressive refinement, with the state
     /// the last frame left it in.
     mean: Option<(Image, Access)>,
+    /// The slot, size and format of the last captured swapchain frame.
+    capture: Option<(usize, u32, u32, vk::Format)>,
     resources: SceneResources,
     pipelines: Pipelines,
     gpu: Arc<Gpu>,
@@ -101,6 +105,7 @@ impl Renderer {
             slots,
             next_slot: 0,
             mean: None,
+            capture: None,
             resources,
             pipelines,
             gpu,
@@ -431,9 +436,19 @@ impl Renderer {
             Some(Access::Present),
         );
         passes::present::add_blit_to(&mut g, &ldr, &mut swap);
-        let mut overlay = target.overlay;
-        if let Some(o) = overlay.as_mut() {
+        if let Some(o) = target.overlay {
             o.add_passes(&mut g, &mut swap);
+        }
+        if target.capture {
+            let needed = u64::from(out_w) * u64::from(out_h) * 4;
+            let gpu = self.gpu.clone();
+            let readback = self.slots[slot_index]
+                .ensure_readback(&gpu, needed)?
+                .binding();
+            let mut buf =
+                g.import_buffer("capture", readback, Access::Nothing, Some(Access::HostRead));
+            copy::add_copy_to_buffer(&mut g, &swap, &mut buf);
+            self.capture = Some((slot_index, out_w, out_h, target.desc.format));
         }
         let waits = [(target.acquired, Access::Acquired.info().stage)];
         self.slots[slot_index].submit(&self.gpu, g, &waits, &[target.rendered])?;
@@ -443,6 +458,37 @@ impl Renderer {
             }
         }
         Ok(())
+    }
+}
+
+impl Renderer {
+    /// The last frame drawn with `capture`, as 8-bit RGBA (waits for it).
+    pub fn take_capture(&mut self) -> Result<Frame> {
+        let (slot, width, height, format) = self
+            .capture
+            .take()
+            .ok_or_else(|| Error::Other("no frame was captured".into()))?;
+        self.wait_idle()?;
+        let readback = self.slots[slot]
+            .readback
+            .as_ref()
+            .ok_or_else(|| Error::Other("capture buffer missing".into()))?;
+        let needed = (u64::from(width) * u64::from(height) * 4) as usize;
+        let mut bytes = readback.mapped()?[..needed].to_vec();
+        if matches!(
+            format,
+            vk::Format::B8G8R8A8_UNORM | vk::Format::B8G8R8A8_SRGB
+        ) {
+            for px in bytes.chunks_exact_mut(4) {
+                px.swap(0, 2);
+            }
+        }
+        Ok(Frame {
+            width,
+            height,
+            pixels: Pixels::Rgba8(bytes),
+            timings: FrameTimings::default(),
+        })
     }
 }
 

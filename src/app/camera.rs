@@ -1,0 +1,133 @@
+//! The window's camera controller: an orbit around `look_at` in spherical
+//! coordinates (distance, azimuth, elevation, with +y up), panned by moving
+//! `look_at` in the view plane. It writes the scene's `[camera]` keys, so a
+//! saved scene renders offscreen exactly what the window showed.
+
+use glam::DVec3;
+
+use crate::scene::Camera;
+
+/// Closest the wheel brings the camera to the hole: just outside the photon
+/// sphere (1.5 rs), unless the user asks to go further in.
+pub const MIN_DISTANCE_RS: f64 = 1.6;
+
+/// An orbit camera.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Orbit {
+    pub target: DVec3,
+    pub distance: f64,
+    /// Radians, around +y, 0 looking from -z toward +z.
+    pub azimuth: f64,
+    /// Radians above the xz plane.
+    pub elevation: f64,
+    pub vfov_deg: f64,
+    /// Whether the wheel may take the camera inside the photon sphere.
+    pub allow_inside: bool,
+}
+
+impl Orbit {
+    /// The orbit that reproduces `camera` (its up is taken as +y).
+    pub fn from_camera(camera: &Camera) -> Self {
+        let target = DVec3::from(camera.look_at);
+        let d = DVec3::from(camera.position) - target;
+        let distance = d.length().max(1e-6);
+        Orbit {
+            target,
+            distance,
+            azimuth: d.x.atan2(-d.z),
+            elevation: (d.y / distance).clamp(-1.0, 1.0).asin(),
+            vfov_deg: camera.vfov_deg,
+            allow_inside: false,
+        }
+    }
+
+    /// The scene camera of this orbit.
+    pub fn camera(&self) -> Camera {
+        let (se, ce) = self.elevation.sin_cos();
+        let (sa, ca) = self.azimuth.sin_cos();
+        let offset = DVec3::new(ce * sa, se, -ce * ca) * self.distance;
+        Camera {
+            position: (self.target + offset).to_array(),
+            look_at: self.target.to_array(),
+            up: [0.0, 1.0, 0.0],
+            vfov_deg: self.vfov_deg,
+        }
+    }
+
+    /// Left drag: `dx`, `dy` in pixels of a window `height` pixels tall
+    /// (dragging right turns the scene right: the camera moves left).
+    pub fn rotate(&mut self, dx: f64, dy: f64, height: f64) {
+        let per_pixel = std::f64::consts::PI / height.max(1.0);
+        self.azimuth -= dx * per_pixel;
+        self.elevation = (self.elevation + dy * per_pixel).clamp(-1.55, 1.55);
+    }
+
+    /// Wheel: `steps` notches, positive zooms in; never closer than
+    /// [`MIN_DISTANCE_RS`] times `rs` to the target unless allowed.
+    pub fn zoom(&mut self, steps: f64, rs: f64) {
+        let min = if self.allow_inside {
+            1.01 * rs
+        } else {
+            MIN_DISTANCE_RS * rs
+        };
+        self.distance = (self.distance * 0.9f64.powf(steps)).clamp(min, 1e5 * rs);
+    }
+
+    /// Right drag: moves the target in the view plane, `dx`, `dy` in pixels.
+    pub fn pan(&mut self, dx: f64, dy: f64, height: f64) {
+        let cam = self.camera();
+        let f = cam.frame();
+        let scale = 2.0 * self.distance * f.tan_half_fov / height.max(1.0);
+        self.target += (-dx * f.right + dy * f.up) * scale;
+    }
+}
+
+/// The second seed's three views: front (just above the disk), top (down the
+/// axis) and a free three-quarter view, at the current distance.
+pub fn preset_view(which: u8, current: &Orbit) -> Orbit {
+    let (azimuth, elevation) = match which {
+        1 => (0.0, 3f64.to_radians()),
+        2 => (0.0, 89f64.to_radians()),
+        _ => (35f64.to_radians(), 25f64.to_radians()),
+    };
+    Orbit {
+        azimuth,
+        elevation,
+        target: DVec3::ZERO,
+        ..*current
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn orbit_round_trips_the_default_camera() {
+        let cam = Camera::default();
+        let back = Orbit::from_camera(&cam).camera();
+        for i in 0..3 {
+            assert!((back.position[i] - cam.position[i]).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn dragging_right_moves_the_camera_toward_minus_x_and_keeps_the_distance() {
+        let mut o = Orbit::from_camera(&Camera::default());
+        let d0 = o.distance;
+        o.rotate(100.0, 0.0, 360.0);
+        let p = o.camera().position;
+        assert!(p[0] < 0.0, "{p:?}");
+        assert!((DVec3::from(p).length() - d0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn the_wheel_stops_outside_the_photon_sphere() {
+        let mut o = Orbit::from_camera(&Camera::default());
+        o.zoom(500.0, 1.0);
+        assert!((o.distance - MIN_DISTANCE_RS).abs() < 1e-12);
+        o.allow_inside = true;
+        o.zoom(500.0, 1.0);
+        assert!(o.distance < 1.5 && o.distance > 1.0);
+    }
+}

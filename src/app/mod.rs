@@ -1,0 +1,531 @@
+//! `blackhole window`: the real-time demo. A winit 0.30 `ApplicationHandler`
+//! owns the window, the surface and swapchain, the renderer (the same frame
+//! graph and passes as offscreen) and the egui panel. Each frame: wait for
+//! the frame slot, acquire an image, run the panel, draw the recipe onto the
+//! image through the graph (blit, then the GUI pass), present.
+
+pub mod camera;
+pub mod gui;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use winit::application::ApplicationHandler;
+use winit::event::{ElementState, MouseButton, MouseScrollDelta, WindowEvent};
+use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
+use winit::keyboard::{Key, NamedKey};
+use winit::window::{Window, WindowId};
+
+use crate::frame::{Frame, FrameTimings, OutputKind};
+use crate::render::{FRAMES_IN_FLIGHT, Renderer, SwapchainTarget, ViewOptions};
+use crate::scene::Scene;
+use crate::vk::{Gpu, Instance, PresentMode, Swapchain, Validation};
+use crate::{Error, Result};
+use camera::Orbit;
+use gui::{Gui, Stats};
+
+/// Frame time the automatic render scale aims at (20 frames a second).
+const AUTO_TARGET_MS: f64 = 50.0;
+/// Most samples the still view accumulates.
+const MAX_SAMPLES: u32 = 4096;
+
+/// What `blackhole window` was asked.
+#[derive(Clone, Debug)]
+pub struct WindowOptions {
+    pub scene: Scene,
+    pub width: u32,
+    pub height: u32,
+    /// Fraction of the window's size the ray march runs at; None: automatic.
+    pub render_scale: Option<f64>,
+    pub present: PresentMode,
+    /// Exit after this many presented frames.
+    pub frames: Option<u64>,
+    /// Write the last presented frame (with the panel) here as PNG.
+    pub screenshot: Option<PathBuf>,
+}
+
+/// Opens the window and runs until it is closed (or `--frames` is reached).
+pub fn run(options: WindowOptions) -> Result<ExitCode> {
+    let event_loop = EventLoop::new().map_err(|e| {
+        Error::Usage(format!(
+            "cannot open a window: {e} (no display? under a headless system run Xvfb and set DISPLAY)"
+        ))
+    })?;
+    event_loop.set_control_flow(ControlFlow::Wait);
+    let mut app = App {
+        options,
+        running: None,
+        error: None,
+        validation: (0, 0, false),
+    };
+    event_loop
+        .run_app(&mut app)
+        .map_err(|e| Error::Other(format!("window event loop: {e}")))?;
+    if let Some(e) = app.error {
+        return Err(e);
+    }
+    let (errors, warnings, enabled) = app.validation;
+    if enabled {
+        eprintln!("validation: {errors} errors, {warnings} warnings");
+    }
+    Ok(if errors + warnings > 0 {
+        ExitCode::from(3)
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+struct App {
+    options: WindowOptions,
+    running: Option<Running>,
+    error: Option<Error>,
+    /// Validation counts and whether it was on, kept after shutdown.
+    validation: (u32, u32, bool),
+}
+
+/// Everything alive while the window is open. Fields drop in order: the
+/// panel and the swapchain (both wait for the GPU), then the renderer, then
+/// the window.
+struct Running {
+    gui: Gui,
+    swapchain: Swapchain,
+    renderer: Option<Renderer>,
+    window: Arc<Window>,
+    /// The scene as loaded (R resets to it).
+    loaded: Scene,
+    /// The scene drawn (the camera follows `orbit`).
+    scene: Scene,
+    orbit: Orbit,
+    paused: bool,
+    time: f64,
+    last_frame: Instant,
+    fps: f64,
+    timings: FrameTimings,
+    scale: f64,
+    auto_scale: bool,
+    /// The view the running mean belongs to, and its sample count.
+    still: Option<(Scene, (u32, u32))>,
+    samples: u32,
+    resized: bool,
+    minimized: bool,
+    dragging: Option<MouseButton>,
+    cursor: Option<(f64, f64)>,
+    presented: u64,
+    wants_f12: bool,
+}
+
+impl App {
+    fn start(&mut self, event_loop: &ActiveEventLoop) -> Result<Running> {
+        let attrs = Window::default_attributes()
+            .with_title("blackhole")
+            .with_inner_size(winit::dpi::PhysicalSize::new(
+                self.options.width,
+                self.options.height,
+            ));
+        let window = Arc::new(
+            event_loop
+                .create_window(attrs)
+                .map_err(|e| Error::Other(format!("creating the window: {e}")))?,
+        );
+        let (display, handle) = handles(&window)?;
+        let exts = ash_window::enumerate_required_extensions(display)
+            .map_err(|result| Error::Vulkan {
+                what: "listing the window system's Vulkan extensions".into(),
+                result,
+            })?
+            .to_vec();
+        let instance = Instance::with_extensions(Validation::from_env(), &exts)?;
+        // SAFETY: the handles come from a live window that outlives the surface
+        // (the swapchain, which owns the surface, drops before the window).
+        let surface = unsafe {
+            ash_window::create_surface(&instance.entry, &instance.instance, display, handle, None)
+        }
+        .map_err(|result| Error::Vulkan {
+            what: "creating the window's Vulkan surface".into(),
+            result,
+        })?;
+        let surface_fn = ash::khr::surface::Instance::new(&instance.entry, &instance.instance);
+        let check = |_: &Instance, pd: ash::vk::PhysicalDevice, family: u32| {
+            // SAFETY: the surface and device belong to this instance.
+            unsafe { surface_fn.get_physical_device_surface_support(pd, family, surface) }
+                .unwrap_or(false)
+        };
+        let gpu = Gpu::open(instance, Some(&check))?;
+        let size = window.inner_size();
+        let swapchain = Swapchain::new(
+            &gpu,
+            surface,
+            (size.width.max(1), size.height.max(1)),
+            self.options.present,
+            FRAMES_IN_FLIGHT,
+        )?;
+        let renderer = Renderer::with_gpu(gpu.clone())?;
+        let scene = self.options.scene.clone();
+        let mut gui = Gui::new(&gpu, &window, swapchain.format, FRAMES_IN_FLIGHT, &scene)?;
+        gui.auto_scale = self.options.render_scale.is_none();
+        gui.scale = self.options.render_scale.unwrap_or(0.5);
+        log::info!(
+            "window {}x{} on {}, present mode {:?}",
+            swapchain.extent.width,
+            swapchain.extent.height,
+            gpu.info.name,
+            swapchain.mode
+        );
+        Ok(Running {
+            orbit: Orbit::from_camera(&scene.camera),
+            loaded: scene.clone(),
+            scene,
+            gui,
+            swapchain,
+            renderer: Some(renderer),
+            window,
+            paused: false,
+            time: 0.0,
+            last_frame: Instant::now(),
+            fps: 0.0,
+            timings: FrameTimings::default(),
+            scale: self.options.render_scale.unwrap_or(0.5),
+            auto_scale: self.options.render_scale.is_none(),
+            still: None,
+            samples: 0,
+            resized: false,
+            minimized: false,
+            dragging: None,
+            cursor: None,
+            presented: 0,
+            wants_f12: false,
+        })
+    }
+
+    fn fail(&mut self, event_loop: &ActiveEventLoop, e: Error) {
+        if self.error.is_none() {
+            self.error = Some(e);
+        }
+        self.stop(event_loop);
+    }
+
+    /// Shuts down in order (checking for leaks) and leaves the loop.
+    fn stop(&mut self, event_loop: &ActiveEventLoop) {
+        if let Some(mut r) = self.running.take() {
+            if let Some(renderer) = r.renderer.take() {
+                let (e, w) = renderer.validation_counts();
+                self.validation = (e, w, renderer.validation_enabled());
+                let _ = renderer.gpu().clone();
+                drop(r);
+                if let Err(err) = renderer.shutdown() {
+                    self.error.get_or_insert(err);
+                }
+            }
+        }
+        event_loop.exit();
+    }
+}
+
+fn handles(
+    window: &Window,
+) -> Result<(
+    raw_window_handle::RawDisplayHandle,
+    raw_window_handle::RawWindowHandle,
+)> {
+    use raw_window_handle::{HasDisplayHandle, HasWindowHandle};
+    let d = window
+        .display_handle()
+        .map_err(|e| Error::Other(format!("the window's display handle: {e}")))?;
+    let w = window
+        .window_handle()
+        .map_err(|e| Error::Other(format!("the window's handle: {e}")))?;
+    Ok((d.as_raw(), w.as_raw()))
+}
+
+impl ApplicationHandler for App {
+    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+        if self.running.is_some() {
+            return;
+        }
+        match self.start(event_loop) {
+            Ok(r) => {
+                r.window.request_redraw();
+                self.running = Some(r);
+            }
+            Err(e) => self.fail(event_loop, e),
+        }
+    }
+
+    fn window_event(&mut self, event_loop: &ActiveEventLoop, _id: WindowId, event: WindowEvent) {
+        let Some(r) = self.running.as_mut() else {
+            return;
+        };
+        let consumed = r.gui.state.on_window_event(&r.window, &event).consumed;
+        match event {
+            WindowEvent::CloseRequested => self.stop(event_loop),
+            WindowEvent::Resized(size) => {
+                r.minimized = size.width == 0 || size.height == 0;
+                r.resized = true;
+                if !r.minimized {
+                    r.window.request_redraw();
+                }
+            }
+            WindowEvent::MouseInput { state, button, .. }
+                if !consumed || state == ElementState::Released =>
+            {
+                r.dragging = (state == ElementState::Pressed).then_some(button);
+            }
+            WindowEvent::CursorMoved { position, .. } => {
+                let p = (position.x, position.y);
+                if let (Some(button), Some(last)) = (r.dragging, r.cursor) {
+                    let (dx, dy) = (p.0 - last.0, p.1 - last.1);
+                    let h = f64::from(r.swapchain.extent.height);
+                    match button {
+                        MouseButton::Left => r.orbit.rotate(dx, dy, h),
+                        MouseButton::Right => r.orbit.pan(dx, dy, h),
+                        _ => {}
+                    }
+                }
+                r.cursor = Some(p);
+            }
+            WindowEvent::MouseWheel { delta, .. } if !consumed => {
+                let steps = match delta {
+                    MouseScrollDelta::LineDelta(_, y) => f64::from(y),
+                    MouseScrollDelta::PixelDelta(p) => p.y / 40.0,
+                };
+                let rs = r.scene.black_holes.first().map_or(1.0, |h| h.rs);
+                r.orbit.zoom(steps, rs);
+            }
+            WindowEvent::KeyboardInput { event, .. }
+                if !consumed && event.state == ElementState::Pressed =>
+            {
+                match event.logical_key.as_ref() {
+                    Key::Named(NamedKey::Escape) => self.stop(event_loop),
+                    Key::Named(NamedKey::Space) => r.paused = !r.paused,
+                    Key::Named(NamedKey::F12) => r.wants_f12 = true,
+                    Key::Character(c) => match c {
+                        "1" | "2" | "3" => {
+                            let n = c.as_bytes()[0] - b'0';
+                            r.orbit = camera::preset_view(n, &r.orbit);
+                        }
+                        "r" | "R" => {
+                            r.scene = r.loaded.clone();
+                            r.gui.draft = r.loaded.clone();
+                            r.orbit = Orbit::from_camera(&r.loaded.camera);
+                            r.time = 0.0;
+                        }
+                        "h" | "H" => r.gui.visible = !r.gui.visible,
+                        _ => {}
+                    },
+                    _ => {}
+                }
+            }
+            WindowEvent::RedrawRequested => {
+                if r.minimized {
+                    return;
+                }
+                match r.frame(&self.options) {
+                    Ok(()) => {}
+                    Err(e) => return self.fail(event_loop, e),
+                }
+                let r = match self.running.as_mut() {
+                    Some(r) => r,
+                    None => return,
+                };
+                if self.options.frames.is_some_and(|n| r.presented >= n) {
+                    if let Some(path) = self.options.screenshot.clone() {
+                        if let Err(e) = r.save_capture(&path) {
+                            return self.fail(event_loop, e);
+                        }
+                    }
+                    return self.stop(event_loop);
+                }
+                r.window.request_redraw();
+            }
+            _ => {}
+        }
+    }
+}
+
+impl Running {
+    /// Draws and presents one frame.
+    fn frame(&mut self, options: &WindowOptions) -> Result<()> {
+        let renderer = self
+            .renderer
+            .as_mut()
+            .ok_or_else(|| Error::Other("renderer already shut down".into()))?;
+        let now = Instant::now();
+        let dt = now
+            .duration_since(self.last_frame)
+            .min(Duration::from_millis(500));
+        self.last_frame = now;
+        let dt_s = dt.as_secs_f64();
+        if dt_s > 0.0 {
+            self.fps = if self.fps == 0.0 {
+                1.0 / dt_s
+            } else {
+                0.9 * self.fps + 0.1 / dt_s
+            };
+        }
+        if !self.paused {
+            self.time += dt_s;
+        }
+        // Automatic render scale: cost goes with the pixel count, so the
+        // scale moves by sqrt(target / measured), in 5% steps and only when
+        // off by more than 20%, so a still view keeps one size and refines.
+        if self.auto_scale && dt_s > 0.0 && self.samples == 0 {
+            let ideal = (self.scale * (AUTO_TARGET_MS / (dt_s * 1e3)).sqrt()).clamp(0.1, 1.0);
+            if (ideal / self.scale - 1.0).abs() > 0.2 {
+                self.scale = (ideal * 20.0).round() / 20.0;
+            }
+        }
+
+        if let Some(t) = renderer.begin_window_frame()? {
+            self.timings = t;
+        }
+        if self.resized {
+            renderer.wait_idle()?;
+            let size = self.window.inner_size();
+            self.swapchain
+                .recreate((size.width.max(1), size.height.max(1)))?;
+            self.gui.set_format(self.swapchain.format)?;
+            renderer.trim()?;
+            self.resized = false;
+        }
+        let Some(image) = self.swapchain.acquire()? else {
+            self.resized = true;
+            return Ok(());
+        };
+        let (w, h) = (image.desc.width, image.desc.height);
+        let render_size = (
+            ((f64::from(w) * self.scale).round() as u32).clamp(1, w),
+            ((f64::from(h) * self.scale).round() as u32).clamp(1, h),
+        );
+
+        // The panel edits a draft; apply it only when it validates.
+        let stats = Stats {
+            fps: self.fps,
+            timings: self.timings.clone(),
+            render_size,
+            window_size: (w, h),
+            samples: self.samples,
+            device: renderer.device_name().to_owned(),
+        };
+        self.gui.draft.camera = self.orbit.camera();
+        let actions = self.gui.run(&self.window, &self.scene, &stats)?;
+        if let Some(s) = actions.load {
+            self.loaded = s.clone();
+            self.scene = s;
+            self.orbit = Orbit::from_camera(&self.scene.camera);
+        } else {
+            match self.gui.draft.check() {
+                Ok(()) => {
+                    self.gui.error = None;
+                    if self.gui.draft.camera != self.orbit.camera() {
+                        self.orbit = Orbit::from_camera(&self.gui.draft.camera);
+                    }
+                    self.scene = self.gui.draft.clone();
+                }
+                Err(e) => self.gui.error = Some(e.to_string()),
+            }
+        }
+        if let Some(scale) = actions.render_scale {
+            self.auto_scale = scale.is_none();
+            if let Some(s) = scale {
+                self.scale = s;
+            }
+        }
+        self.scene.camera = self.orbit.camera();
+        let mut drawn = self.scene.clone();
+        drawn.time = self.time;
+        drawn.base_dir = self.loaded.base_dir.clone();
+
+        // Progressive refinement while nothing changes.
+        let mut key = drawn.clone();
+        if drawn.disk.kind != crate::scene::DiskKind::Volumetric {
+            key.time = 0.0;
+        }
+        let still = Some((key, render_size));
+        if still == self.still {
+            self.samples = (self.samples + 1).min(MAX_SAMPLES);
+        } else {
+            self.samples = 0;
+            self.still = still;
+        }
+        let jitter = if self.samples == 0 {
+            (0.0, 0.0)
+        } else {
+            (halton(self.samples, 2) - 0.5, halton(self.samples, 3) - 0.5)
+        };
+        let capture =
+            options.screenshot.is_some() && options.frames.is_some_and(|n| self.presented + 1 >= n);
+        renderer.draw_to_swapchain(
+            &drawn,
+            ViewOptions {
+                render_size,
+                jitter: (jitter.0 as f32, jitter.1 as f32),
+                sample: Some(self.samples),
+            },
+            SwapchainTarget {
+                desc: image.desc,
+                binding: image.binding,
+                acquired: image.acquired,
+                rendered: image.rendered,
+                overlay: Some(&mut self.gui),
+                capture,
+            },
+        )?;
+        if !self.swapchain.present(image.index, image.rendered)? {
+            self.resized = true;
+        }
+        self.presented += 1;
+        if self.wants_f12 {
+            self.wants_f12 = false;
+            self.save_view()?;
+        }
+        Ok(())
+    }
+
+    /// F12: the view at full quality (full resolution, no panel) as PNG.
+    fn save_view(&mut self) -> Result<()> {
+        let renderer = self
+            .renderer
+            .as_mut()
+            .ok_or_else(|| Error::Other("renderer already shut down".into()))?;
+        let (w, h) = (self.swapchain.extent.width, self.swapchain.extent.height);
+        renderer.wait_idle()?;
+        let mut scene = self.scene.clone();
+        scene.time = self.time;
+        let frame = renderer.render(&scene, w, h, OutputKind::Ldr)?;
+        let stamp = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map(|d| d.as_secs())
+            .unwrap_or(0);
+        let path = PathBuf::from(format!("blackhole-{stamp}.png"));
+        crate::output::write_frame(&frame, &path, crate::output::FileFormat::Png)?;
+        self.gui.message = format!("saved {}", path.display());
+        log::info!("saved {}", path.display());
+        Ok(())
+    }
+
+    /// `--screenshot`: the last presented frame, as the window showed it.
+    fn save_capture(&mut self, path: &std::path::Path) -> Result<()> {
+        let renderer = self
+            .renderer
+            .as_mut()
+            .ok_or_else(|| Error::Other("renderer already shut down".into()))?;
+        let frame: Frame = renderer.take_capture()?;
+        crate::output::write_frame(&frame, path, crate::output::FileFormat::Png)?;
+        log::info!("wrote {}", path.display());
+        Ok(())
+    }
+}
+
+/// The radical inverse of `i` in `base` (Halton sequence), in [0, 1).
+fn halton(mut i: u32, base: u32) -> f64 {
+    let mut f = 1.0;
+    let mut r = 0.0;
+    while i > 0 {
+        f /= f64::from(base);
+        r += f * f64::from(i % base);
+        i /= base;
+    }
+    r
+}
