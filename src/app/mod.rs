@@ -42,7 +42,8 @@ pub struct WindowOptions {
     pub present: PresentMode,
     /// Exit after this many presented frames.
     pub frames: Option<u64>,
-    /// Write the last presented frame (with the panel) here as PNG.
+    /// Write the last presented frame (with the panel) here as PNG when
+    /// the window closes.
     pub screenshot: Option<PathBuf>,
 }
 
@@ -114,6 +115,8 @@ struct Running {
     cursor: Option<(f64, f64)>,
     presented: u64,
     wants_f12: bool,
+    /// Keys held down (to ignore duplicate presses).
+    keys_down: Vec<Key>,
 }
 
 impl App {
@@ -196,6 +199,7 @@ impl App {
             cursor: None,
             presented: 0,
             wants_f12: false,
+            keys_down: Vec::new(),
         })
     }
 
@@ -206,9 +210,18 @@ impl App {
         self.stop(event_loop);
     }
 
-    /// Shuts down in order (checking for leaks) and leaves the loop.
+    /// Writes the screenshot if asked, shuts down in order (checking for
+    /// leaks) and leaves the loop.
     fn stop(&mut self, event_loop: &ActiveEventLoop) {
         if let Some(mut r) = self.running.take() {
+            eprintln!("presented {} frames", r.presented);
+            if let Some(path) = self.options.screenshot.clone() {
+                if r.presented > 0 {
+                    if let Err(e) = r.save_capture(&path) {
+                        self.error.get_or_insert(e);
+                    }
+                }
+            }
             if let Some(renderer) = r.renderer.take() {
                 let (e, w) = renderer.validation_counts();
                 self.validation = (e, w, renderer.validation_enabled());
@@ -258,6 +271,20 @@ impl ApplicationHandler for App {
             return;
         };
         let consumed = r.gui.state.on_window_event(&r.window, &event).consumed;
+        // X11 may deliver one press twice (with input methods): act on the
+        // first press of a key until it is released.
+        let mut first_press = false;
+        if let WindowEvent::KeyboardInput { event: k, .. } = &event {
+            let key = k.logical_key.clone();
+            if k.state == ElementState::Pressed {
+                first_press = !k.repeat && !r.keys_down.contains(&key);
+                if first_press {
+                    r.keys_down.push(key);
+                }
+            } else {
+                r.keys_down.retain(|d| *d != key);
+            }
+        }
         match event {
             WindowEvent::CloseRequested => self.stop(event_loop),
             WindowEvent::Resized(size) => {
@@ -293,9 +320,7 @@ impl ApplicationHandler for App {
                 let rs = r.scene.black_holes.first().map_or(1.0, |h| h.rs);
                 r.orbit.zoom(steps, rs);
             }
-            WindowEvent::KeyboardInput { event, .. }
-                if !consumed && event.state == ElementState::Pressed =>
-            {
+            WindowEvent::KeyboardInput { event, .. } if !consumed && first_press => {
                 match event.logical_key.as_ref() {
                     Key::Named(NamedKey::Escape) => self.stop(event_loop),
                     Key::Named(NamedKey::Space) => r.paused = !r.paused,
@@ -330,11 +355,6 @@ impl ApplicationHandler for App {
                     None => return,
                 };
                 if self.options.frames.is_some_and(|n| r.presented >= n) {
-                    if let Some(path) = self.options.screenshot.clone() {
-                        if let Err(e) = r.save_capture(&path) {
-                            return self.fail(event_loop, e);
-                        }
-                    }
                     return self.stop(event_loop);
                 }
                 r.window.request_redraw();
@@ -454,8 +474,9 @@ impl Running {
         } else {
             (halton(self.samples, 2) - 0.5, halton(self.samples, 3) - 0.5)
         };
-        let capture =
-            options.screenshot.is_some() && options.frames.is_some_and(|n| self.presented + 1 >= n);
+        // With --screenshot every frame is copied out, so whichever frame
+        // turns out to be the last (--frames, Esc, closing) can be written.
+        let capture = options.screenshot.is_some();
         renderer.draw_to_swapchain(
             &drawn,
             ViewOptions {

@@ -72,8 +72,8 @@ pub enum Command {
         /// Exit after N presented frames (for automated runs).
         #[arg(long, value_parser = clap::value_parser!(u64).range(1..))]
         frames: Option<u64>,
-        /// With --frames: write the last presented frame (panel included) as PNG.
-        #[arg(long, requires = "frames")]
+        /// Write the last presented frame (panel included) as PNG on exit.
+        #[arg(long)]
         screenshot: Option<PathBuf>,
     },
     /// Render a still or a sequence offscreen to PNG (8-bit sRGB, tone-mapped) or EXR (linear HDR).

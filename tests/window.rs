@@ -1,0 +1,250 @@
+//! The windowed demo under Xvfb (started here when no display is set), driven
+//! with xdotool: open, render, resize, unmap and map, screenshot, exit; and a
+//! synthetic drag that orbits the camera. Validation is required and silent.
+
+mod common;
+
+use std::process::{Child, Command, Stdio};
+use std::sync::OnceLock;
+use std::time::{Duration, Instant};
+
+use common::{assert_clean, blackhole, path_in, scratch};
+
+/// The tests share one display and find the window by its title: one at a time.
+fn one_at_a_time() -> std::sync::MutexGuard<'static, ()> {
+    static LOCK: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    LOCK.lock().unwrap_or_else(|p| p.into_inner())
+}
+
+/// The display to use: $DISPLAY, or an Xvfb this test process starts.
+fn display() -> String {
+    static DISPLAY: OnceLock<String> = OnceLock::new();
+    DISPLAY
+        .get_or_init(|| {
+            if let Ok(d) = std::env::var("DISPLAY") {
+                if !d.is_empty() {
+                    return d;
+                }
+            }
+            let d = format!(":{}", 90 + std::process::id() % 9);
+            let child = Command::new("Xvfb")
+                .args([
+                    d.as_str(),
+                    "-screen",
+                    "0",
+                    "1280x1024x24",
+                    "-nolisten",
+                    "tcp",
+                ])
+                .stdout(Stdio::null())
+                .stderr(Stdio::null())
+                .spawn()
+                .expect("Xvfb runs (apt-get install xvfb)");
+            // Left running for the other tests; it ends with the test process's session.
+            std::mem::forget(child);
+            std::thread::sleep(Duration::from_millis(1500));
+            d
+        })
+        .clone()
+}
+
+fn xdotool(args: &[&str]) -> String {
+    let out = Command::new("xdotool")
+        .args(args)
+        .env("DISPLAY", display())
+        .output()
+        .expect("xdotool runs (apt-get install xdotool)");
+    String::from_utf8_lossy(&out.stdout).trim().to_owned()
+}
+
+/// Waits for the window of `child` to appear; returns its X id.
+fn window_id(child: &mut Child) -> String {
+    let start = Instant::now();
+    loop {
+        let id = xdotool(&["search", "--sync", "--onlyvisible", "--name", "^blackhole$"]);
+        if let Some(first) = id.lines().next() {
+            return first.to_owned();
+        }
+        assert!(
+            child.try_wait().expect("polling the window").is_none(),
+            "the window exited before it appeared"
+        );
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "no window after 60 s"
+        );
+        std::thread::sleep(Duration::from_millis(200));
+    }
+}
+
+/// Opens the window (it runs until Esc, or 100,000 frames).
+fn spawn_window(shot: &std::path::Path) -> Child {
+    let mut c = blackhole();
+    c.env("DISPLAY", display())
+        .args([
+            "window",
+            "--width",
+            "640",
+            "--height",
+            "360",
+            "--render-scale",
+            "0.5",
+        ])
+        .args(["--frames", "100000", "--screenshot"])
+        .arg(shot)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped());
+    c.spawn().expect("the blackhole binary runs")
+}
+
+/// Presses `key` in the window (focused first: synthetic events sent to a
+/// window are ignored, real ones through XTEST go to the focus).
+fn press(id: &str, key: &str) {
+    xdotool(&["windowfocus", "--sync", id]);
+    xdotool(&["key", key]);
+}
+
+/// Lets the window render for a while, presses Esc and collects the run;
+/// checks it presented at least `min_frames`.
+fn finish(child: Child, id: &str, min_frames: u64) -> (i32, String, String) {
+    std::thread::sleep(Duration::from_millis(1500));
+    press(id, "Escape");
+    let out = child.wait_with_output().expect("waiting for the window");
+    let err = String::from_utf8_lossy(&out.stderr);
+    let presented: u64 = err
+        .lines()
+        .find_map(|l| {
+            l.strip_prefix("presented ")?
+                .strip_suffix(" frames")?
+                .parse()
+                .ok()
+        })
+        .unwrap_or(0);
+    assert!(
+        presented >= min_frames,
+        "presented {presented} frames:\n{err}"
+    );
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn luma(img: &image::RgbImage, x0: u32, y0: u32, w: u32, h: u32) -> f64 {
+    let mut sum = 0.0;
+    for y in y0..y0 + h {
+        for x in x0..x0 + w {
+            let p = img.get_pixel(x, y);
+            sum += 0.2126 * f64::from(p[0]) + 0.7152 * f64::from(p[1]) + 0.0722 * f64::from(p[2]);
+        }
+    }
+    sum / f64::from(w * h) / 255.0
+}
+
+#[test]
+fn window_renders_resizes_survives_unmap_and_takes_a_screenshot() {
+    let _one = one_at_a_time();
+    let dir = scratch();
+    let shot = path_in(&dir, "window.png");
+    let mut child = spawn_window(&shot);
+    let id = window_id(&mut child);
+    std::thread::sleep(Duration::from_millis(1000));
+    xdotool(&["windowsize", "--sync", &id, "800", "450"]);
+    std::thread::sleep(Duration::from_millis(500));
+    xdotool(&["windowunmap", "--sync", &id]);
+    std::thread::sleep(Duration::from_millis(500));
+    xdotool(&["windowmap", "--sync", &id]);
+    let (code, out, err) = finish(child, &id, 30);
+    assert_clean(code, &out, &err);
+
+    let img = image::open(&shot)
+        .expect("the screenshot is a PNG")
+        .to_rgb8();
+    assert_eq!(
+        img.dimensions(),
+        (800, 450),
+        "the screenshot follows the resize"
+    );
+    // The view right of the panel: the hole's shadow sits just above the
+    // centre (the disk's near side crosses the centre), with bright disk
+    // light and stars around it.
+    let shadow = luma(&img, 390, 180, 20, 16);
+    let around = luma(&img, 560, 200, 200, 50);
+    assert!(shadow < 0.05, "the shadow is not dark: {shadow}");
+    assert!(
+        around > shadow + 0.05,
+        "no structure around the hole: {around}"
+    );
+}
+
+#[test]
+fn a_left_drag_orbits_the_camera_around_the_hole() {
+    let _one = one_at_a_time();
+    let dir = scratch();
+    let still = path_in(&dir, "still.png");
+    let dragged = path_in(&dir, "dragged.png");
+    let mut child = spawn_window(&still);
+    let id = window_id(&mut child);
+    // H hides the panel, so the whole view shows.
+    press(&id, "h");
+    let (code, out, err) = finish(child, &id, 2);
+    assert_clean(code, &out, &err);
+
+    let mut child = spawn_window(&dragged);
+    let id = window_id(&mut child);
+    press(&id, "h");
+    std::thread::sleep(Duration::from_millis(1000));
+    xdotool(&["mousemove", "--window", &id, "500", "80"]);
+    xdotool(&["mousedown", "1"]);
+    for step in 1..=10 {
+        let x = (500 + 8 * step).to_string();
+        xdotool(&["mousemove", "--window", &id, &x, "80"]);
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    xdotool(&["mouseup", "1"]);
+    let (code, out, err) = finish(child, &id, 2);
+    assert_clean(code, &out, &err);
+
+    let a = image::open(&still).expect("PNG").to_rgb8();
+    let b = image::open(&dragged).expect("PNG").to_rgb8();
+    // An orbit keeps the hole at the centre (the camera still looks at it)...
+    assert!(
+        luma(&a, 312, 144, 16, 12) < 0.05,
+        "no shadow at the centre before the drag"
+    );
+    assert!(
+        luma(&b, 312, 144, 16, 12) < 0.05,
+        "the hole left the centre"
+    );
+    // ...while the sky behind it turns: the picture changes.
+    let (mut changed, mut total) = (0u32, 0u32);
+    for y in (0..360).step_by(2) {
+        for x in (0..640).step_by(2) {
+            total += 1;
+            let (p, q) = (a.get_pixel(x, y), b.get_pixel(x, y));
+            if (0..3).any(|c| p[c].abs_diff(q[c]) > 24) {
+                changed += 1;
+            }
+        }
+    }
+    assert!(
+        f64::from(changed) > 0.05 * f64::from(total),
+        "the drag changed only {changed} of {total} pixels"
+    );
+}
+
+#[test]
+fn a_scene_saved_from_the_panel_loads_back_unchanged() {
+    let dir = scratch();
+    let path = path_in(&dir, "saved.toml");
+    let mut scene = blackhole::Scene::load("doppler").expect("preset");
+    scene.camera.position = [3.0, 4.0, -12.0];
+    scene.disk.temperature_k = 7321.0;
+    scene.bloom.levels = 5;
+    let p = path.to_str().expect("utf-8 path");
+    blackhole::app::gui::save_scene(&scene, p).expect("saves");
+    let mut back = blackhole::Scene::load(p).expect("loads");
+    back.base_dir = scene.base_dir.clone();
+    assert_eq!(back, scene);
+}
