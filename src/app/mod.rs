@@ -103,6 +103,8 @@ struct Running {
     time: f64,
     last_frame: Instant,
     fps: f64,
+    /// Smoothed seconds per frame.
+    frame_s: f64,
     timings: FrameTimings,
     scale: f64,
     auto_scale: bool,
@@ -115,6 +117,7 @@ struct Running {
     cursor: Option<(f64, f64)>,
     presented: u64,
     wants_f12: bool,
+    started: Instant,
     /// Keys held down (to ignore duplicate presses).
     keys_down: Vec<Key>,
 }
@@ -188,6 +191,7 @@ impl App {
             time: 0.0,
             last_frame: Instant::now(),
             fps: 0.0,
+            frame_s: 0.0,
             timings: FrameTimings::default(),
             scale: self.options.render_scale.unwrap_or(0.5),
             auto_scale: self.options.render_scale.is_none(),
@@ -200,6 +204,7 @@ impl App {
             presented: 0,
             wants_f12: false,
             keys_down: Vec::new(),
+            started: Instant::now(),
         })
     }
 
@@ -214,7 +219,12 @@ impl App {
     /// leaks) and leaves the loop.
     fn stop(&mut self, event_loop: &ActiveEventLoop) {
         if let Some(mut r) = self.running.take() {
-            eprintln!("presented {} frames", r.presented);
+            let secs = r.started.elapsed().as_secs_f64();
+            eprintln!(
+                "presented {} frames in {secs:.1} s ({:.1} frames a second)",
+                r.presented,
+                r.presented as f64 / secs.max(1e-9)
+            );
             if let Some(path) = self.options.screenshot.clone() {
                 if r.presented > 0 {
                     if let Err(e) = r.save_capture(&path) {
@@ -377,12 +387,15 @@ impl Running {
             .min(Duration::from_millis(500));
         self.last_frame = now;
         let dt_s = dt.as_secs_f64();
+        // Average the frame time, not the rate: frames in flight make single
+        // intervals uneven.
         if dt_s > 0.0 {
-            self.fps = if self.fps == 0.0 {
-                1.0 / dt_s
+            self.frame_s = if self.frame_s == 0.0 {
+                dt_s
             } else {
-                0.9 * self.fps + 0.1 / dt_s
+                0.9 * self.frame_s + 0.1 * dt_s
             };
+            self.fps = 1.0 / self.frame_s;
         }
         if !self.paused {
             self.time += dt_s;
