@@ -115,7 +115,8 @@ fn finish(child: Child, id: &str, min_frames: u64) -> (i32, String, String) {
         .lines()
         .find_map(|l| {
             l.strip_prefix("presented ")?
-                .strip_suffix(" frames")?
+                .split(' ')
+                .next()?
                 .parse()
                 .ok()
         })

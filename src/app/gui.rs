@@ -52,6 +52,8 @@ pub struct Gui {
     pub message: String,
     pub visible: bool,
     pub auto_scale: bool,
+    /// Let the wheel take the camera inside the photon sphere.
+    pub inside: bool,
     pub scale: f64,
     primitives: Vec<egui::ClippedPrimitive>,
     pixels_per_point: f32,
@@ -117,6 +119,7 @@ impl Gui {
             message: String::new(),
             visible: true,
             auto_scale: false,
+            inside: false,
             scale: 1.0,
             primitives: Vec::new(),
             pixels_per_point: 1.0,
@@ -229,6 +232,10 @@ impl Gui {
                 actions.render_scale = Some((!self.auto_scale).then_some(self.scale));
             }
         });
+        ui.checkbox(
+            &mut self.inside,
+            "let the wheel go inside the photon sphere (1.5 rs)",
+        );
         ui.separator();
         ui.horizontal(|ui| {
             ui.label("preset");

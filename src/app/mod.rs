@@ -443,6 +443,8 @@ impl Running {
         };
         self.gui.draft.camera = self.orbit.camera();
         let actions = self.gui.run(&self.window, &self.scene, &stats)?;
+        self.orbit.allow_inside = self.gui.inside;
+        let previous = self.scene.clone();
         if let Some(s) = actions.load {
             self.loaded = s.clone();
             self.scene = s;
@@ -455,9 +457,18 @@ impl Running {
                         self.orbit = Orbit::from_camera(&self.gui.draft.camera);
                     }
                     self.scene = self.gui.draft.clone();
+                    self.scene.base_dir = self.loaded.base_dir.clone();
                 }
                 Err(e) => self.gui.error = Some(e.to_string()),
             }
+        }
+        // A sky image that cannot be read is an error in the panel, not the
+        // end of the program: keep the scene that worked.
+        if let Err(e) = renderer.prepare_scene(&self.scene) {
+            self.gui.error = Some(e.to_string());
+            self.scene = previous;
+            self.gui.draft = self.scene.clone();
+            renderer.prepare_scene(&self.scene)?;
         }
         if let Some(scale) = actions.render_scale {
             self.auto_scale = scale.is_none();
@@ -468,7 +479,6 @@ impl Running {
         self.scene.camera = self.orbit.camera();
         let mut drawn = self.scene.clone();
         drawn.time = self.time;
-        drawn.base_dir = self.loaded.base_dir.clone();
 
         // Progressive refinement while nothing changes.
         let mut key = drawn.clone();

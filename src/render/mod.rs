@@ -178,8 +178,9 @@ impl Renderer {
     }
 
     /// Uploads the scene's image sky if it changed (after every frame in
-    /// flight is done with the old one).
-    fn prepare_scene(&mut self, scene: &Scene) -> Result<()> {
+    /// flight is done with the old one). An unreadable sky is reported here,
+    /// before any frame is built.
+    pub fn prepare_scene(&mut self, scene: &Scene) -> Result<()> {
         if self.resources.sky_changes(scene) {
             self.wait_idle()?;
             self.resources.ensure_sky(scene)?;
