@@ -108,6 +108,12 @@ impl Swapchain {
     /// Rebuilds the swapchain for `size` (the window's inner size). The
     /// caller must have waited for every frame in flight.
     pub fn recreate(&mut self, size: (u32, u32)) -> Result<()> {
+        // Fences cover the frames' submissions but not the presentation
+        // engine's waits on the "rendered" semaphores destroyed below: only
+        // an idle queue guarantees those are done.
+        // SAFETY: valid device.
+        unsafe { self.gpu.device.device_wait_idle() }
+            .ctx(|| "waiting for the GPU before recreating the swapchain".into())?;
         let pd = self.gpu.physical;
         // SAFETY: the surface and physical device are alive.
         let caps = unsafe {
