@@ -16,10 +16,10 @@ pub use recipe::{Accumulation, FrameOutput, HdrSource, PostSettings, add_frame};
 pub use slots::{FRAMES_IN_FLIGHT, FrameSlot};
 
 use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
-use crate::graph::{BufferHandle, Graph, ImageHandle};
+use crate::graph::{Graph, ImageHandle};
 use crate::passes::{self, Pipelines, copy, raymarch};
 use crate::scene::{DiskKind, Scene};
-use crate::vk::{Access, Buffer, Gpu, Image, ImageBinding, ImageDesc, Validation};
+use crate::vk::{Access, Buffer, BufferBinding, Gpu, Image, ImageBinding, ImageDesc, Validation};
 use crate::{Error, Result};
 use resources::SceneResources;
 
@@ -242,28 +242,19 @@ impl Renderer {
             Access::Nothing,
             Some(Access::HostRead),
         );
-        let params = g.import_buffer("raymarch params", params, Access::HostWrite, None);
-        let (lut, sky) = import_scene_images(&mut g, &self.resources);
         let output = match kind {
             OutputKind::Ldr => FrameOutput::Ldr,
             OutputKind::Hdr => FrameOutput::Hdr,
             OutputKind::HdrPost => FrameOutput::HdrPost,
             OutputKind::Geodesic => FrameOutput::Geodesic,
         };
-        let result = add_frame(
+        let result = add_scene_frame(
             &mut g,
             &self.pipelines,
-            HdrSource::RayMarch {
-                scene,
-                params: &params,
-                disk_lut: &lut,
-                sky: &sky,
-                size: (width, height),
-            },
-            PostSettings {
-                bloom: &scene.bloom,
-                post: &scene.post,
-            },
+            &self.resources,
+            scene,
+            params,
+            (width, height),
             output,
             None,
         );
@@ -391,13 +382,6 @@ impl Renderer {
 
         let (out_w, out_h) = (target.desc.width, target.desc.height);
         let mut g = Graph::new(out_w, out_h);
-        let params: BufferHandle = g.import_buffer(
-            "raymarch params",
-            self.slots[slot_index].params.binding(),
-            Access::HostWrite,
-            None,
-        );
-        let (lut, sky) = import_scene_images(&mut g, &self.resources);
         let mut mean_handle = match (&self.mean, sample) {
             (Some((img, state)), Some(_)) => Some(g.import_image(
                 "accumulated mean",
@@ -412,20 +396,13 @@ impl Renderer {
             (Some(mean), Some(index)) => Some(Accumulation { mean, index }),
             _ => None,
         };
-        let ldr = add_frame(
+        let ldr = add_scene_frame(
             &mut g,
             &self.pipelines,
-            HdrSource::RayMarch {
-                scene,
-                params: &params,
-                disk_lut: &lut,
-                sky: &sky,
-                size: (w, h),
-            },
-            PostSettings {
-                bloom: &scene.bloom,
-                post: &scene.post,
-            },
+            &self.resources,
+            scene,
+            self.slots[slot_index].params.binding(),
+            (w, h),
             FrameOutput::Ldr,
             accumulation,
         );
@@ -515,6 +492,39 @@ fn finish_offscreen(
         pixels,
         timings,
     })
+}
+
+/// Imports a slot's parameter block (written by the host) and the shared
+/// images, then adds the recipe for `scene`'s ray march at `size`.
+fn add_scene_frame<'a>(
+    g: &mut Graph<'a>,
+    pipelines: &'a Pipelines,
+    resources: &SceneResources,
+    scene: &Scene,
+    params: BufferBinding,
+    size: (u32, u32),
+    output: FrameOutput,
+    accumulation: Option<Accumulation<'_>>,
+) -> ImageHandle {
+    let params = g.import_buffer("raymarch params", params, Access::HostWrite, None);
+    let (lut, sky) = import_scene_images(g, resources);
+    add_frame(
+        g,
+        pipelines,
+        HdrSource::RayMarch {
+            scene,
+            params: &params,
+            disk_lut: &lut,
+            sky: &sky,
+            size,
+        },
+        PostSettings {
+            bloom: &scene.bloom,
+            post: &scene.post,
+        },
+        output,
+        accumulation,
+    )
 }
 
 /// Imports the colour table and the sky (the table again when the sky is not
