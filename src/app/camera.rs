@@ -11,6 +11,10 @@ use crate::scene::Camera;
 /// sphere (1.5 rs), unless the user asks to go further in.
 pub const MIN_DISTANCE_RS: f64 = 1.6;
 
+/// Highest elevation of the orbit (radians, just short of the pole): with
+/// +y as up, a camera exactly on the axis would have no defined right.
+const MAX_ELEVATION: f64 = 1.55;
+
 /// An orbit camera.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Orbit {
@@ -26,7 +30,9 @@ pub struct Orbit {
 }
 
 impl Orbit {
-    /// The orbit that reproduces `camera` (its up is taken as +y).
+    /// The orbit that reproduces `camera` (its up is taken as +y; a camera on
+    /// the y axis, like the top-down preset's, is tilted to the highest
+    /// elevation the orbit allows).
     pub fn from_camera(camera: &Camera) -> Self {
         let target = DVec3::from(camera.look_at);
         let d = DVec3::from(camera.position) - target;
@@ -35,7 +41,10 @@ impl Orbit {
             target,
             distance,
             azimuth: d.x.atan2(-d.z),
-            elevation: (d.y / distance).clamp(-1.0, 1.0).asin(),
+            elevation: (d.y / distance)
+                .clamp(-1.0, 1.0)
+                .asin()
+                .clamp(-MAX_ELEVATION, MAX_ELEVATION),
             vfov_deg: camera.vfov_deg,
             allow_inside: false,
         }
@@ -59,7 +68,7 @@ impl Orbit {
     pub fn rotate(&mut self, dx: f64, dy: f64, height: f64) {
         let per_pixel = std::f64::consts::PI / height.max(1.0);
         self.azimuth -= dx * per_pixel;
-        self.elevation = (self.elevation + dy * per_pixel).clamp(-1.55, 1.55);
+        self.elevation = (self.elevation + dy * per_pixel).clamp(-MAX_ELEVATION, MAX_ELEVATION);
     }
 
     /// Wheel: `steps` notches, positive zooms in; never closer than
@@ -109,6 +118,17 @@ mod tests {
         for i in 0..3 {
             assert!((back.position[i] - cam.position[i]).abs() < 1e-9);
         }
+    }
+
+    #[test]
+    fn a_camera_on_the_axis_becomes_a_valid_orbit_camera() {
+        let top = crate::scene::Scene::load("top-down").expect("preset");
+        let mut scene = top.clone();
+        scene.camera = Orbit::from_camera(&top.camera).camera();
+        scene.check().expect("the orbit's camera passes validation");
+        let f = scene.camera.frame();
+        assert!(f.right.is_finite() && f.up.is_finite());
+        assert!(f.forward.dot(DVec3::NEG_Y) > 0.999, "still looks down");
     }
 
     #[test]

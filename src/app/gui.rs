@@ -128,7 +128,7 @@ impl Gui {
         })
     }
 
-    /// Whether the swapchain format changed (the renderer is rebuilt then).
+    /// Follows a new swapchain format (rebuilding the GUI pipeline if it changed).
     pub fn set_format(&mut self, format: vk::Format) -> Result<()> {
         if format != self.format {
             self.renderer

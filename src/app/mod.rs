@@ -169,9 +169,7 @@ impl App {
         )?;
         let renderer = Renderer::with_gpu(gpu.clone())?;
         let scene = self.options.scene.clone();
-        let mut gui = Gui::new(&gpu, &window, swapchain.format, FRAMES_IN_FLIGHT, &scene)?;
-        gui.auto_scale = self.options.render_scale.is_none();
-        gui.scale = self.options.render_scale.unwrap_or(0.5);
+        let gui = Gui::new(&gpu, &window, swapchain.format, FRAMES_IN_FLIGHT, &scene)?;
         log::info!(
             "window {}x{} on {}, present mode {:?}",
             swapchain.extent.width,
@@ -235,7 +233,6 @@ impl App {
             if let Some(renderer) = r.renderer.take() {
                 let (e, w) = renderer.validation_counts();
                 self.validation = (e, w, renderer.validation_enabled());
-                let _ = renderer.gpu().clone();
                 drop(r);
                 if let Err(err) = renderer.shutdown() {
                     self.error.get_or_insert(err);
@@ -442,6 +439,9 @@ impl Running {
             device: renderer.device_name().to_owned(),
         };
         self.gui.draft.camera = self.orbit.camera();
+        // The panel shows the scale in use (auto moves it).
+        self.gui.auto_scale = self.auto_scale;
+        self.gui.scale = self.scale;
         let actions = self.gui.run(&self.window, &self.scene, &stats)?;
         self.orbit.allow_inside = self.gui.inside;
         let previous = self.scene.clone();
