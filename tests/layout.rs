@@ -101,6 +101,22 @@ fn composite_push_constants_match_the_glsl_block() {
     assert_eq!(glsl, rust);
 }
 
+#[test]
+fn accumulate_push_constants_match_the_glsl_block() {
+    use blackhole::passes::accumulate::AccumulatePush;
+    let glsl = member_offsets(blackhole::shaders::ACCUMULATE, "Push");
+    let rust: Vec<u32> = [
+        offset_of!(AccumulatePush, width),
+        offset_of!(AccumulatePush, height),
+        offset_of!(AccumulatePush, weight),
+    ]
+    .iter()
+    .map(|&o| o as u32)
+    .collect();
+    assert_eq!(glsl, rust);
+    assert_eq!(size_of::<AccumulatePush>(), 12);
+}
+
 /// `#define NAME VALUE` lines of a GLSL source, as (name, value) text.
 fn defines(src: &str) -> Vec<(String, String)> {
     src.lines()
