@@ -3,6 +3,7 @@
 //! GPU ray by ray) and to draw photon paths.
 
 pub mod blackbody;
+pub mod closed_form;
 pub mod disk;
 pub mod geodesic;
 pub mod redshift;
