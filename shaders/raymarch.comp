@@ -15,6 +15,7 @@ layout(constant_id = 1) const bool VOLUME = false;
 
 #include "params.glsl"
 #include "geodesic.glsl"
+#include "lightpath.glsl"
 
 #ifdef GEODESIC_AOV
 // The geodesic AOV (the geodesic AOV table in the README): where each ray went.
@@ -48,7 +49,9 @@ vec3 disk_color(float r, float g_full) {
     float r_in = P.disk.x;
     float f = max((1.0 - sqrt(r_in / r)) / (r * r * r), 0.0);
     float t_rel = sqrt(sqrt(f / P.disk_temp.y));   // T / T_peak
-    float g_grav = sqrt(max(1.0 - rs / r, 1e-6));
+    // The gravitational part as this observer measures it: emitter's clock
+    // against the camera's.
+    float g_grav = sqrt(max(1.0 - rs / r, 1e-6)) / P.observer_r.w;
     bool doppler = P.disk_temp.z > 0.5, redshift = P.disk_temp.w > 0.5;
     float g = doppler ? (redshift ? g_full : g_full / g_grav) : (redshift ? g_grav : 1.0);
     float t_obs = g * t_rel * P.disk_temp.x;
@@ -146,25 +149,34 @@ float disk_redshift(vec3 p, vec3 x, vec3 v) {
     return sqrt(max(1.0 - 1.5 * rs / r, 0.0)) / (1.0 - omega * lambda);
 }
 
-// One classic Runge-Kutta step of Binet's equation u'' = -u + 1.5 rs u^2
-// (u = 1/r, ' = d/dphi) for the state (u, u').
-vec2 binet_rk4(vec2 s, float h, float rs) {
-    vec2 k1 = vec2(s.y, -s.x + 1.5 * rs * s.x * s.x);
-    vec2 s2 = s + 0.5 * h * k1;
-    vec2 k2 = vec2(s2.y, -s2.x + 1.5 * rs * s2.x * s2.x);
-    vec2 s3 = s + 0.5 * h * k2;
-    vec2 k3 = vec2(s3.y, -s3.x + 1.5 * rs * s3.x * s3.x);
-    vec2 s4 = s + h * k3;
-    vec2 k4 = vec2(s4.y, -s4.x + 1.5 * rs * s4.x * s4.x);
-    return s + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+// The volumetric slab around one disk-plane crossing of a closed-form path:
+// the angles where |height| < H, from the crossing's radius and the tilt of
+// the orbit plane (widened for the path's curvature), walked as chords
+// between points of the exact path.
+void volume_crossing(LightPath path, float phi_j, float tilt, vec3 c, vec3 e1, vec3 e2,
+                     float rs, float lambda, inout Hit hit) {
+    float H = P.vol0.x;
+    float r_j = rs / path_u(path, clamp(phi_j, 0.0, path.phi_end));
+    float half_width = 1.3 * asin(min(H / max(tilt * r_j, 1e-6), 1.0));
+    float a = max(phi_j - half_width, 0.0);
+    float b = min(phi_j + half_width, path.phi_end);
+    if (b <= a) return;
+    const int CHORDS = 6;
+    vec3 prev = c + (rs / path_u(path, a)) * (cos(a) * e1 + sin(a) * e2);
+    for (int k = 1; k <= CHORDS; ++k) {
+        float phi = mix(a, b, float(k) / float(CHORDS));
+        float u = max(path_u(path, phi), 1e-6);
+        vec3 next = c + (rs / u) * (cos(phi) * e1 + sin(phi) * e2);
+        volume_segment(prev, next, lambda, hit.glow, hit.trans);
+        prev = next;
+    }
 }
 
-// One hole: the path stays in the plane of the hole, the camera and the ray,
-// and its shape r(phi) obeys Binet's equation, the same curve as the Cartesian
-// equation of geodesic.glsl, at a fraction of the cost: two numbers per step
-// instead of six, and events in closed form. Disk crossings are where the
-// orbit plane meets the disk plane (phi_0 + k pi), reached exactly; escape is
-// u = 0, where the position's direction is the asymptotic direction.
+// One hole: the path lies in the plane of the hole, the camera and the ray,
+// and its shape u(phi) is known in closed form (lightpath.glsl). Disk
+// crossings are where the orbit plane meets the disk plane (phi_0 + k pi),
+// u there straight from the formula; escape and capture come from the total
+// sweep; no steps.
 Hit trace_planar(vec3 x, vec3 d) {
     Hit hit;
     hit.outcome = OUT_NO_STEPS;
@@ -183,92 +195,60 @@ Hit trace_planar(vec3 x, vec3 d) {
     if (sn < 1e-7) {
         // A radial ray: straight in (captured) or straight out (escaped).
         hit.outcome = dot(d, e1) < 0.0 ? OUT_CAPTURED : OUT_ESCAPED;
+        hit.pos = x;
         return hit;
     }
     nrm /= sn;
     vec3 e2 = cross(nrm, e1);
-    vec2 s = vec2(1.0 / r0, -(dot(d, e1) / dot(d, e2)) / r0);
-    // Conserved: 1/b^2 = u'^2 + u^2 - rs u^3.
-    float inv_b2 = s.y * s.y + s.x * s.x - rs * s.x * s.x * s.x;
-
-    const float NEVER = 1e30;
-    float phi_next = NEVER;
+    float u0 = rs / r0;
+    float du = -(dot(d, e1) / dot(d, e2)) * u0;
+    LightPath path = light_path(u0, du);
+    // Impact parameter b (world units) and the photon's angular momentum
+    // about the disk axis (the ray runs backwards: -nrm).
+    float b_imp = rs * inversesqrt(max(du * du + u0 * u0 * (1.0 - u0), 1e-30));
     vec3 N = P.disk_normal.xyz;
-    if (int(P.disk_normal.w) == DISK_THIN) {
-        float a = dot(e1, N), b = dot(e2, N);
-        if (abs(a) + abs(b) > 1e-6) {
-            float phi0 = atan(-a, b);     // a cos(phi) + b sin(phi) = 0
-            if (phi0 <= 1e-6) phi0 += PI; // the next crossing ahead of the camera
-            phi_next = phi0;
+    float lambda = -dot(nrm, N) * b_imp;
+
+    int kind = int(P.disk_normal.w);
+    float na = dot(e1, N), nb = dot(e2, N);
+    float tilt = length(vec2(na, nb));
+    if (kind != DISK_NONE && tilt > 1e-6) {
+        float phi0 = atan(-na, nb);       // a cos(phi) + b sin(phi) = 0
+        if (kind == DISK_THIN) {
+            float phi = phi0 <= 1e-6 ? phi0 + PI : phi0;  // the next crossing ahead
+            for (int j = 0; j < 24 && phi < path.phi_end; ++j) {
+                float r = rs / path_u(path, phi);
+                if (r >= P.disk.x && r <= P.disk.y) {
+                    hit.outcome = OUT_DISK;
+                    hit.pos = c + r * (cos(phi) * e1 + sin(phi) * e2);
+                    float omega = sqrt(0.5 * rs / (r * r * r));
+                    hit.g = sqrt(max(1.0 - 1.5 * rs / r, 0.0)) / (1.0 - omega * lambda);
+                    return hit;
+                }
+                phi += PI;
+            }
+        } else if (volumetric()) {
+            // The crossing behind the camera too: its slab may reach the camera.
+            float phi = phi0 - PI;
+            for (int j = 0; j < 24 && phi - PI < path.phi_end; ++j) {
+                volume_crossing(path, phi, tilt, c, e1, e2, rs, lambda, hit);
+                if (hit.trans < 0.003) {
+                    hit.outcome = OUT_CAPTURED;  // opaque: nothing behind shows
+                    return hit;
+                }
+                phi += PI;
+            }
         }
     }
-    float dphi = P.integ.w;
-    bool vol = volumetric();
-    // The photon's angular momentum about the disk axis (runs backwards: -nrm).
-    float lambda = -dot(nrm, N) / sqrt(max(inv_b2, 1e-30));
-    // No disk crossing can come after this radius on the way out.
-    float tail_u = 1.0 / max(max(10.0 * rs, int(P.disk_normal.w) != DISK_NONE ? P.disk.y : 0.0), 1e-6);
-    float u_capture = 1.0 / rs;
-    float phi = 0.0;
-    uint budget = P.counts.w;
-    for (uint i = 0u; i < budget; ++i) {
-        // Steps shrink where the nonlinear term 1.5 rs u^2 matters.
-        float h = dphi / (1.0 + 8.0 * rs * s.x);
-        bool at_crossing = phi + h >= phi_next;
-        if (at_crossing) h = phi_next - phi;
-        vec2 sn2 = binet_rk4(s, h, rs);
-        if (vol && sn2.x > 0.0) {
-            vec3 pa = c + (cos(phi) * e1 + sin(phi) * e2) / s.x;
-            vec3 pb = c + (cos(phi + h) * e1 + sin(phi + h) * e2) / min(sn2.x, u_capture);
-            volume_segment(pa, pb, lambda, hit.glow, hit.trans);
-            if (hit.trans < 0.003) {
-                hit.outcome = OUT_CAPTURED;  // opaque: nothing behind shows
-                return hit;
-            }
-        }
-        if (sn2.x <= 0.0) {
-            float phi_inf = phi + h * s.x / (s.x - sn2.x);
-            hit.outcome = OUT_ESCAPED;
-            hit.dir = cos(phi_inf) * e1 + sin(phi_inf) * e2;
-            hit.pos = c + (cos(phi) * e1 + sin(phi) * e2) / s.x;  // last finite point
-            return hit;
-        }
-        if (sn2.x >= u_capture) {
-            hit.outcome = OUT_CAPTURED;
-            return hit;
-        }
-        phi += h;
-        s = sn2;
-        // Outgoing beyond the disk and far from the hole: the rest of the path
-        // is the straight tangent line plus the first-order remaining bend
-        // (see asymptotic_direction), once that bend is small enough that its
-        // second-order remainder is far below f32 noise.
-        if (s.y < 0.0 && s.x < tail_u) {
-            float q = length(s);                 // 1 / (distance of the tangent line)
-            float bl = 1.0 / q;
-            float R = 1.0 / s.x;
-            float sl = -s.y / (s.x * q);         // along-line position, > 0 outgoing
-            float delta = rs / (2.0 * bl) * (2.0 - sl * (2.0 * sl * sl + 3.0 * bl * bl) / (R * R * R));
-            if (delta < 1e-3) {
-                float phi_inf = phi + atan(s.x, -s.y) + delta;
-                hit.outcome = OUT_ESCAPED;
-                hit.dir = cos(phi_inf) * e1 + sin(phi_inf) * e2;
-                hit.pos = c + R * (cos(phi) * e1 + sin(phi) * e2);
-                return hit;
-            }
-        }
-        if (at_crossing) {
-            float r = 1.0 / s.x;
-            if (r >= P.disk.x && r <= P.disk.y) {
-                hit.outcome = OUT_DISK;
-                hit.pos = c + r * (cos(phi) * e1 + sin(phi) * e2);
-                // lambda = L/E about the disk axis; the photon runs backwards (-nrm).
-                float omega = sqrt(0.5 * rs / (r * r * r));
-                hit.g = sqrt(max(1.0 - 1.5 * rs / r, 0.0)) / (1.0 - omega * lambda);
-                return hit;
-            }
-            phi_next += PI;
-        }
+    if (path.escapes) {
+        float phi = path.phi_end;
+        hit.outcome = OUT_ESCAPED;
+        vec2 cs = cos_sin_precise(phi);
+        hit.dir = cs.x * e1 + cs.y * e2;
+        // A point on the asymptote: it passes the hole at distance b.
+        hit.pos = c + b_imp * cross(hit.dir, nrm);
+    } else {
+        hit.outcome = OUT_CAPTURED;
     }
     return hit;
 }
@@ -321,6 +301,14 @@ Hit trace(vec3 x, vec3 v) {
             float d0 = plane_dist(x), d1 = plane_dist(xn);
             if ((d0 < 0.0) != (d1 < 0.0) || d1 == 0.0) {
                 vec3 p = plane_crossing(x, v, xn, vn, h);
+                // A crossing inside a horizon (a hole in the disk's plane)
+                // comes after the ray fell in.
+                for (uint k = 0u; k < P.counts.x; ++k) {
+                    if (length(p - P.holes[k].xyz) < P.holes[k].w) {
+                        hit.outcome = OUT_CAPTURED;
+                        return hit;
+                    }
+                }
                 float rho = length(p - c0);
                 if (rho >= P.disk.x && rho <= P.disk.y) {
                     hit.outcome = OUT_DISK;
@@ -370,9 +358,29 @@ void main() {
     float sx = (2.0 * (float(px.x) + 0.5 + P.cam_up.w) / float(w) - 1.0) * tan_half * aspect;
     float sy = (1.0 - 2.0 * (float(px.y) + 0.5 + P.cam_fwd.w) / float(hgt)) * tan_half;
     vec3 dir = normalize(P.cam_fwd.xyz + sx * P.cam_right.xyz + sy * P.cam_up.xyz);
+    // The pixel's direction is measured in the observer's own frame
+    // (src/physics/observer.rs): aberration by its velocity into the static
+    // frame, then the static frame's radial squeeze into a coordinate
+    // direction; its clock and motion scale the redshift it measures.
+    if (int(P.observer.w) != OBS_FLAT) {
+        vec3 beta = P.observer.xyz;
+        float b2 = dot(beta, beta);
+        float doppler = 1.0;
+        if (b2 > 0.0) {
+            float gam = inversesqrt(1.0 - b2);
+            float bd = dot(beta, dir);
+            dir = normalize((dir / gam - beta + (gam / (gam + 1.0)) * bd * beta) / (1.0 - bd));
+            doppler = gam * (1.0 + dot(beta, dir));
+        }
+        vec3 rh = P.observer_r.xyz;
+        float dr = dot(dir, rh);
+        dir = normalize(P.observer_r.w * dr * rh + (dir - dr * rh));
+        observer_g = doppler / P.observer_r.w;
+    }
 
     volume_jitter = hash33(uvec3(px, 7u)).x;
     Hit hit = ONE_HOLE ? trace_planar(P.cam_pos.xyz, dir) : trace(P.cam_pos.xyz, dir);
+    hit.g *= observer_g;
 #ifdef GEODESIC_AOV
     vec4 aov = vec4(0.0, 0.0, 0.0, float(hit.outcome));
     if (hit.outcome == OUT_ESCAPED) {

@@ -1,10 +1,20 @@
 //! The GPU's geodesic AOV against the f64 CPU reference, ray by ray, for
-//! several cameras. Outcomes must agree except for rays within 1e-3 rad of a
-//! shadow or disk edge; the escape direction, disk radius, azimuth and
-//! redshift must agree to the accuracy the issue sets (p99).
+//! several cameras and observers. Outcomes must agree except for rays within
+//! 1e-3 rad of a shadow or disk edge; the escape direction, disk radius,
+//! azimuth and redshift must agree to 1e-5 rad, 2e-4 rs, 1e-5 rad and 1e-5
+//! (p99).
+//!
+//! Conditioning: the GPU starts from an f32 pixel direction, about 1e-7 rad
+//! from the f64 one. Near the photon ring a ray's fate moves by much more
+//! than 1e-5 for that nudge, so no f32 renderer can match there. Each ray's
+//! condition is measured (the f64 closed form under 1e-7 rad nudges); the
+//! percentiles are over the well-conditioned rays (nudge moves the result by
+//! under a quarter of the tolerance), and every other ray must stay within
+//! four times its own nudge sensitivity plus the tolerance.
 
 mod common;
 
+use blackhole::physics::closed_form::trace_closed;
 use blackhole::physics::geodesic::{
     Disk, Hole, Outcome, TraceOptions, disk_azimuth, photon_lambda, trace,
 };
@@ -12,6 +22,10 @@ use blackhole::physics::redshift::disk_redshift;
 use blackhole::scene::Scene;
 use common::{assert_clean, blackhole, path_in, run, scratch};
 use glam::DVec3;
+
+const DIR_TOL: f64 = 1e-5;
+const RADIUS_TOL: f64 = 2e-4;
+const G_TOL: f64 = 1e-5;
 
 const W: u32 = 64;
 const H: u32 = 36;
@@ -36,6 +50,8 @@ fn p99(v: &mut [f64]) -> f64 {
 struct Figures {
     rays: usize,
     edge: usize,
+    /// Rays whose f32 rounding alone moves them past a quarter of the tolerance.
+    ill_conditioned: usize,
     dir: Vec<f64>,
     radius: Vec<f64>,
     azimuth: Vec<f64>,
@@ -90,11 +106,71 @@ fn compare(name: &str, position: [f64; 3], extra: &str) -> Figures {
         outer: scene.disk.outer_radius,
     };
     let opts = TraceOptions::default();
-    let cpu_trace = |d: DVec3| trace(&holes, Some(&disk), frame.position, d, &opts).outcome;
+    let observer = scene.observer();
+    let disk = (scene.disk.kind == blackhole::scene::DiskKind::Thin).then_some(disk);
+    // Pixel direction (the observer's frame) -> outcome.
+    let cpu_trace = |d: DVec3| {
+        trace(
+            &holes,
+            disk.as_ref(),
+            frame.position,
+            observer.coordinate_direction(d),
+            &opts,
+        )
+        .outcome
+    };
+    let closed = |d: DVec3| {
+        trace_closed(
+            &holes[0],
+            disk.as_ref(),
+            frame.position,
+            observer.coordinate_direction(d),
+        )
+    };
+    // What one disk hit's numbers are: radius, azimuth, g as the observer sees it.
+    let disk_numbers = |d: DVec3, position: DVec3, velocity: DVec3| {
+        let hole = &holes[0];
+        let r = (position - hole.position).length();
+        let az = disk_azimuth(hole.position, normal, position);
+        let g = disk_redshift(r, hole.rs, photon_lambda(hole, normal, position, velocity))
+            * observer.g_factor(d);
+        (r, az, g)
+    };
+    // How far 1e-7 rad nudges move a ray's result: (direction, radius, g).
+    let sensitivity = |d: DVec3| {
+        let base = closed(d);
+        let mut worst = (0.0f64, 0.0f64, 0.0f64);
+        for n in [frame.right, -frame.right, frame.up, -frame.up] {
+            let dn = (d + 1e-7 * n).normalize();
+            match (base, closed(dn)) {
+                (Outcome::Escaped { direction: a }, Outcome::Escaped { direction: b }) => {
+                    worst.0 = worst.0.max(a.cross(b).length().atan2(a.dot(b)));
+                }
+                (
+                    Outcome::Disk {
+                        position: pa,
+                        velocity: va,
+                    },
+                    Outcome::Disk {
+                        position: pb,
+                        velocity: vb,
+                    },
+                ) => {
+                    let (ra, _, ga) = disk_numbers(d, pa, va);
+                    let (rb, _, gb) = disk_numbers(dn, pb, vb);
+                    worst.1 = worst.1.max((ra - rb).abs());
+                    worst.2 = worst.2.max((ga - gb).abs());
+                }
+                _ => worst = (f64::INFINITY, f64::INFINITY, f64::INFINITY),
+            }
+        }
+        worst
+    };
 
     let mut f = Figures {
         rays: 0,
         edge: 0,
+        ill_conditioned: 0,
         dir: vec![],
         radius: vec![],
         azimuth: vec![],
@@ -132,22 +208,43 @@ fn compare(name: &str, position: [f64; 3], extra: &str) -> Figures {
                 f.edge += 1;
                 continue;
             }
+            let kappa = if holes.len() == 1 && scene.physics.gravity {
+                sensitivity(d)
+            } else {
+                (0.0, 0.0, 0.0)
+            };
             match cpu {
                 Outcome::Escaped { direction } => {
                     let g = DVec3::new(f64::from(px[0]), f64::from(px[1]), f64::from(px[2]));
-                    f.dir
-                        .push(g.cross(direction).length().atan2(g.dot(direction)));
+                    let err = g.cross(direction).length().atan2(g.dot(direction));
+                    if kappa.0 > DIR_TOL / 4.0 {
+                        f.ill_conditioned += 1;
+                        assert!(
+                            err <= 4.0 * kappa.0 + DIR_TOL,
+                            "{name}: ray ({col},{row}) direction off by {err:e}, its 1e-7 nudge moves it {:e}",
+                            kappa.0
+                        );
+                    } else {
+                        f.dir.push(err);
+                    }
                 }
                 Outcome::Disk { position, velocity } => {
-                    let hole = &holes[0];
-                    let r = (position - hole.position).length();
-                    let az = disk_azimuth(hole.position, normal, position);
-                    let g =
-                        disk_redshift(r, hole.rs, photon_lambda(hole, normal, position, velocity));
-                    f.radius.push((f64::from(px[0]) - r).abs());
+                    let (r, az, g) = disk_numbers(d, position, velocity);
+                    let (er, eg) = ((f64::from(px[0]) - r).abs(), (f64::from(px[2]) - g).abs());
                     let daz = (f64::from(px[1]) - az).rem_euclid(std::f64::consts::TAU);
-                    f.azimuth.push(daz.min(std::f64::consts::TAU - daz));
-                    f.g.push((f64::from(px[2]) - g).abs());
+                    if kappa.1 > RADIUS_TOL / 4.0 || kappa.2 > G_TOL / 4.0 {
+                        f.ill_conditioned += 1;
+                        assert!(
+                            er <= 4.0 * kappa.1 + RADIUS_TOL && eg <= 4.0 * kappa.2 + G_TOL,
+                            "{name}: ray ({col},{row}) radius off by {er:e}, g by {eg:e}; its 1e-7 nudge moves them {:e}, {:e}",
+                            kappa.1,
+                            kappa.2
+                        );
+                    } else {
+                        f.radius.push(er);
+                        f.azimuth.push(daz.min(std::f64::consts::TAU - daz));
+                        f.g.push(eg);
+                    }
                 }
                 Outcome::Captured { .. } | Outcome::NoSteps => {
                     assert_eq!(&px[..3], &[0.0, 0.0, 0.0]);
@@ -165,13 +262,23 @@ fn compare(name: &str, position: [f64; 3], extra: &str) -> Figures {
 #[test]
 fn gpu_geodesic_aov_matches_the_f64_reference() {
     let cameras = [
-        ("near", [0.0, 1.0, -6.0]),
-        ("far", [0.0, 2.0, -40.0]),
-        ("above", [0.0, 14.0, -4.0]),
-        ("edge-on", [0.0, 0.0, -15.0]),
+        ("near", [0.0, 1.0, -6.0], "static"),
+        ("far", [0.0, 2.0, -40.0], "static"),
+        ("above", [0.0, 14.0, -4.0], "static"),
+        ("edge-on", [0.0, 0.0, -15.0], "static"),
+        ("near", [0.0, 1.0, -6.0], "orbiting"),
+        ("near", [0.0, 1.0, -6.0], "falling"),
+        ("near", [0.0, 1.0, -6.0], "flat"),
     ];
-    for (name, pos) in cameras {
-        let mut f = compare(name, pos, "");
+    for (camera, pos, observer) in cameras {
+        let name = format!("{camera}/{observer}");
+        let mut f = compare(&name, pos, &format!("observer = \"{observer}\"\n"));
+        assert!(
+            f.dir.len() >= 100 && f.radius.len() >= 20,
+            "{name}: too few well-conditioned escapes ({}) or disk hits ({}) to measure",
+            f.dir.len(),
+            f.radius.len()
+        );
         let (d, r, a, g) = (
             p99(&mut f.dir),
             p99(&mut f.radius),
@@ -179,16 +286,22 @@ fn gpu_geodesic_aov_matches_the_f64_reference() {
             p99(&mut f.g),
         );
         println!(
-            "{name:8} rays {} (edge {}), escape dir p99 {d:.2e} rad, disk radius p99 {r:.2e} rs, azimuth p99 {a:.2e} rad, g p99 {g:.2e} ({} disk rays)",
+            "{name:16} rays {} (edge {}, ill-conditioned {}), escape dir p99 {d:.2e} rad ({} rays), disk radius p99 {r:.2e} rs, azimuth p99 {a:.2e} rad, g p99 {g:.2e} ({} disk rays)",
             f.rays,
             f.edge,
+            f.ill_conditioned,
+            f.dir.len(),
             f.radius.len()
         );
         assert!(f.edge * 10 < f.rays, "{name}: too many edge rays");
-        assert!(d <= 1e-4, "{name}: escape direction p99 {d:e}");
-        assert!(r <= 1e-3, "{name}: disk radius p99 {r:e}");
-        assert!(a <= 1e-3, "{name}: azimuth p99 {a:e}");
-        assert!(g <= 1e-3, "{name}: redshift p99 {g:e}");
+        assert!(
+            f.ill_conditioned * 10 < f.rays,
+            "{name}: too many ill-conditioned rays"
+        );
+        assert!(d <= DIR_TOL, "{name}: escape direction p99 {d:e}");
+        assert!(r <= RADIUS_TOL, "{name}: disk radius p99 {r:e}");
+        assert!(a <= 1e-5, "{name}: azimuth p99 {a:e}");
+        assert!(g <= G_TOL, "{name}: redshift p99 {g:e}");
     }
 }
 
@@ -201,7 +314,7 @@ fn two_holes_follow_the_f64_reference() {
     let mut f = compare("binary", [0.0, 1.5, -15.0], extra);
     let (d, r, a) = (p99(&mut f.dir), p99(&mut f.radius), p99(&mut f.azimuth));
     println!(
-        "binary   rays {} (edge {}), escape dir p99 {d:.2e} rad, disk radius p99 {r:.2e} rs, azimuth p99 {a:.2e} rad ({} disk rays)",
+        "binary           rays {} (edge {}), escape dir p99 {d:.2e} rad, disk radius p99 {r:.2e} rs, azimuth p99 {a:.2e} rad ({} disk rays)",
         f.rays,
         f.edge,
         f.radius.len()

@@ -19,6 +19,12 @@
 #define SKY_STARS 2
 #define SKY_IMAGE 3
 
+// Observer kinds (observer.w), as src/physics/observer.rs.
+#define OBS_STATIC 0
+#define OBS_ORBITING 1
+#define OBS_FALLING 2
+#define OBS_FLAT 3
+
 // Temperature range of the blackbody table (log-spaced), kelvin.
 #define LUT_MIN_K 500.0
 #define LUT_MAX_K 100000.0
@@ -39,7 +45,9 @@ layout(std430, binding = 1) readonly buffer RaymarchParams {
     vec4 plane_u;      // xyz: in-plane axis, w: half size
     vec4 vol1;         // x: noise octaves, y: rotation time (speed x time), z: lit (emission scale), w: 1 blackbody / 0 colour map
     vec4 sky;          // x: sky kind, y: checker squares or star density, z: brightness, w: galaxy band
-    vec4 integ;        // x: tolerance, y: escape radius, z: gravity on (1/0), w: Binet far-field step (rad)
+    vec4 integ;        // x: tolerance, y: escape radius, z: gravity on (1/0), w: unused
+    vec4 observer;     // xyz: the camera's velocity in the static frame (world axes); w: observer kind
+    vec4 observer_r;   // xyz: unit vector from the reference hole to the camera; w: sqrt(1 - rs/r) (1: flat)
     uvec4 counts;      // x: hole count, y: width, z: height, w: step budget
     vec4 holes[MAX_HOLES]; // xyz: position, w: rs
 } P;

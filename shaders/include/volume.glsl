@@ -50,6 +50,10 @@ float volume_density(vec3 p, out float r) {
     return dens * clamp(0.55 + 0.9 * noise, 0.0, 2.0) * 3.0;
 }
 
+// What turns g seen from infinity into g seen by the camera's observer
+// (src/physics/observer.rs), set by main().
+float observer_g = 1.0;
+
 // Sample spacing along a ray, in rs.
 const float VOLUME_DS = 0.2;
 
@@ -80,7 +84,7 @@ void volume_segment(vec3 a, vec3 b, float lambda, inout vec3 acc, inout float tr
         if (blackbody_mode) {
             float omega = sqrt(0.5 * rs / (r * r * r));
             float g = sqrt(max(1.0 - 1.5 * rs / r, 1e-4)) / (1.0 - omega * lambda);
-            emit = disk_color(max(r, 1.0001 * P.disk.x), g);
+            emit = disk_color(max(r, 1.0001 * P.disk.x), g * observer_g);
         } else {
             emit = volume_colormap(r);
         }

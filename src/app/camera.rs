@@ -25,6 +25,8 @@ pub struct Orbit {
     /// Radians above the xz plane.
     pub elevation: f64,
     pub vfov_deg: f64,
+    /// Who holds the camera (kept from the scene).
+    pub observer: crate::physics::observer::ObserverKind,
     /// Whether the wheel may take the camera inside the photon sphere.
     pub allow_inside: bool,
 }
@@ -46,6 +48,7 @@ impl Orbit {
                 .asin()
                 .clamp(-MAX_ELEVATION, MAX_ELEVATION),
             vfov_deg: camera.vfov_deg,
+            observer: camera.observer,
             allow_inside: false,
         }
     }
@@ -60,6 +63,7 @@ impl Orbit {
             look_at: self.target.to_array(),
             up: [0.0, 1.0, 0.0],
             vfov_deg: self.vfov_deg,
+            observer: self.observer,
         }
     }
 

@@ -65,21 +65,14 @@ pub struct RaymarchParams {
     pub vol1: [f32; 4],
     pub sky: [f32; 4],
     pub integ: [f32; 4],
+    pub observer: [f32; 4],
+    pub observer_r: [f32; 4],
     pub counts: [u32; 4],
     pub holes: [[f32; 4]; MAX_HOLES],
 }
 
 fn v4(v: glam::DVec3, w: f64) -> [f32; 4] {
     [v.x as f32, v.y as f32, v.z as f32, w as f32]
-}
-
-/// The far-field angle step of the one-hole (Binet) integrator for a quality
-/// tolerance. Classic RK4's local error goes as h^5, so the step scales as
-/// tol^(1/4): 0.2 rad at the default 1e-5, where the GPU's escape directions
-/// agree with the f64 reference to better than 1e-4 rad (tests/geodesic.rs).
-/// The shader shrinks it near the hole by 1 / (1 + 8 rs u).
-pub fn binet_step(tolerance: f64) -> f64 {
-    (0.2 * (tolerance / 1e-5).powf(0.25)).clamp(0.002, 0.4)
 }
 
 /// r⁻³ (1 - sqrt(r_in / r)) at the Novikov-Thorne peak, the shader's normaliser.
@@ -118,6 +111,7 @@ impl RaymarchParams {
         };
         let sky_kind = sky_kind as f32;
         let (e1, e2) = crate::physics::geodesic::disk_basis(glam::DVec3::from(scene.disk.normal));
+        let obs = scene.observer();
         RaymarchParams {
             cam_pos: v4(f.position, f.tan_half_fov),
             cam_right: v4(f.right, f64::from(width) / f64::from(height)),
@@ -170,8 +164,10 @@ impl RaymarchParams {
                 scene.quality.tolerance as f32,
                 scene.escape_radius() as f32,
                 f32::from(u8::from(scene.physics.gravity)),
-                binet_step(scene.quality.tolerance) as f32,
+                0.0,
             ],
+            observer: v4(obs.beta, f64::from(obs.kind as u32)),
+            observer_r: v4(obs.rhat, obs.lapse),
             counts: [
                 scene.black_holes.len().min(MAX_HOLES) as u32,
                 width,

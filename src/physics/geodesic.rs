@@ -217,6 +217,18 @@ pub fn trace(
                         hit = m;
                     }
                 }
+                // A crossing inside a horizon (a hole in the disk's plane)
+                // comes after the ray fell in.
+                if let Some(i) = holes
+                    .iter()
+                    .position(|h| (hit.x - h.position).length() < h.rs)
+                {
+                    return TraceResult {
+                        outcome: Outcome::Captured { hole: i },
+                        steps: step + 1,
+                        path,
+                    };
+                }
                 let rho = (hit.x - centre).length();
                 if rho >= d.inner && rho <= d.outer {
                     if opt.record_path {

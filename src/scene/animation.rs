@@ -118,6 +118,7 @@ impl Animation {
                     look_at: lerp3(a.look_at, b.look_at),
                     up: base.up,
                     vfov_deg: fov(a) + (fov(b) - fov(a)) * s,
+                    observer: base.observer,
                 }
             }
         }

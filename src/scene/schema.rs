@@ -7,6 +7,7 @@ use glam::DVec3;
 use serde::Deserialize;
 
 use super::animation::Animation;
+use crate::physics::observer::ObserverKind;
 
 /// Camera (the binding convention in the README): `position`, `look_at`, `up`, `vfov_deg`.
 #[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
@@ -16,6 +17,9 @@ pub struct Camera {
     pub look_at: [f64; 3],
     pub up: [f64; 3],
     pub vfov_deg: f64,
+    /// Who holds the camera: "static" (at rest), "orbiting", "falling" or
+    /// "flat" (the pixel direction used as the coordinate direction).
+    pub observer: ObserverKind,
 }
 
 impl Default for Camera {
@@ -25,6 +29,7 @@ impl Default for Camera {
             look_at: [0.0; 3],
             up: [0.0, 1.0, 0.0],
             vfov_deg: 60.0,
+            observer: ObserverKind::Static,
         }
     }
 }

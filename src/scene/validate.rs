@@ -5,6 +5,7 @@ use glam::DVec3;
 
 use super::locate::Seg::{self, Idx, Key};
 use super::{CameraPath, DiskKind, MAX_HOLES, Scene, SkyKind};
+use crate::physics::observer::{ObserverKind, reference_hole};
 
 /// A rejected value: its key path, the value as written, and the reason.
 pub type Invalid = (Vec<Seg>, String, String);
@@ -133,6 +134,30 @@ impl Scene {
                 vec3(&c.position),
                 format!("is inside the horizon of black_hole[{i}]"),
             )?;
+        }
+        if c.observer == ObserverKind::Orbiting {
+            let holes = self.physics_holes();
+            let cam = DVec3::from(c.position);
+            if let Some(h) = reference_hole(&holes, cam) {
+                let rel = cam - h.position;
+                rule(
+                    rel.length() > 1.5 * h.rs,
+                    &[Key("camera"), Key("observer")],
+                    "\"orbiting\"",
+                    format!(
+                        "needs the camera outside the photon sphere (r > 1.5 rs = {}); it is at r = {:.4}",
+                        1.5 * h.rs,
+                        rel.length()
+                    ),
+                )?;
+                let axis = DVec3::from(self.disk.normal).normalize_or_zero();
+                rule(
+                    axis == DVec3::ZERO || axis.cross(rel.normalize()).length() > 1e-6,
+                    &[Key("camera"), Key("observer")],
+                    "\"orbiting\"",
+                    "needs the camera off the disk's axis (an orbit around the axis has no direction there)",
+                )?;
+            }
         }
         Ok(())
     }
