@@ -5,13 +5,19 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-// One hole with gravity on: the plane (Binet) integrator; otherwise the
-// general Cartesian one. A specialization constant, so the unused path is
-// compiled out of each pipeline.
+// Specialization constants (src/passes/raymarch.rs, `Variant`): code a
+// scene does not use is compiled out of its pipeline. On a CPU driver such as
+// lavapipe every branch runs under a mask for every pixel, taken or not, so
+// this is what keeps the cost to the code a scene uses.
+// One hole with gravity on: the closed-form path; otherwise the general
+// Cartesian integrator.
 layout(constant_id = 0) const bool ONE_HOLE = false;
-// The volumetric disk, likewise compiled in only where the scene has one:
-// its code, even when skipped, costs lavapipe a factor of three.
-layout(constant_id = 1) const bool VOLUME = false;
+// The disk kind (DISK_NONE, DISK_THIN, DISK_VOLUME).
+layout(constant_id = 1) const int DISK_KIND = 1;
+// The sky kind (SKY_BLACK, SKY_CHECKER, SKY_STARS, SKY_IMAGE).
+layout(constant_id = 2) const int SKY_KIND = 2;
+// The grid plane is drawn.
+layout(constant_id = 3) const bool GRID_PLANE = false;
 
 #include "params.glsl"
 #include "geodesic.glsl"
@@ -80,7 +86,7 @@ struct Hit {
 };
 
 bool volumetric() {
-    return VOLUME;
+    return DISK_KIND == DISK_VOLUME;
 }
 
 // The bending a ray still gets beyond the escape radius, to first order in rs
@@ -172,6 +178,12 @@ void volume_crossing(LightPath path, float phi_j, float tilt, vec3 c, vec3 e1, v
     }
 }
 
+// Disk-plane crossings looked at per ray: four turns. Rays that wind more
+// are within ~e^-8 of the critical impact parameter and stay inside
+// 1.6 rs for those turns; the crossings after them are disk images far
+// thinner than a pixel, and the whole SIMD group waits for its slowest ray.
+const int CROSSINGS = 8;
+
 // One hole: the path lies in the plane of the hole, the camera and the ray,
 // and its shape u(phi) is known in closed form (lightpath.glsl). Disk
 // crossings are where the orbit plane meets the disk plane (phi_0 + k pi),
@@ -209,14 +221,14 @@ Hit trace_planar(vec3 x, vec3 d) {
     vec3 N = P.disk_normal.xyz;
     float lambda = -dot(nrm, N) * b_imp;
 
-    int kind = int(P.disk_normal.w);
+    const int kind = DISK_KIND;
     float na = dot(e1, N), nb = dot(e2, N);
     float tilt = length(vec2(na, nb));
     if (kind != DISK_NONE && tilt > 1e-6) {
         float phi0 = atan(-na, nb);       // a cos(phi) + b sin(phi) = 0
         if (kind == DISK_THIN) {
             float phi = phi0 <= 1e-6 ? phi0 + PI : phi0;  // the next crossing ahead
-            for (int j = 0; j < 24 && phi < path.phi_end; ++j) {
+            for (int j = 0; j < CROSSINGS && phi < path.phi_end; ++j) {
                 float r = rs / path_u(path, phi);
                 if (r >= P.disk.x && r <= P.disk.y) {
                     hit.outcome = OUT_DISK;
@@ -230,7 +242,7 @@ Hit trace_planar(vec3 x, vec3 d) {
         } else if (volumetric()) {
             // The crossing behind the camera too: its slab may reach the camera.
             float phi = phi0 - PI;
-            for (int j = 0; j < 24 && phi - PI < path.phi_end; ++j) {
+            for (int j = 0; j < CROSSINGS + 1 && phi - PI < path.phi_end; ++j) {
                 volume_crossing(path, phi, tilt, c, e1, e2, rs, lambda, hit);
                 if (hit.trans < 0.003) {
                     hit.outcome = OUT_CAPTURED;  // opaque: nothing behind shows
@@ -265,7 +277,7 @@ Hit trace(vec3 x, vec3 v) {
     float tol = P.integ.x;
     float r_esc = P.integ.y;
     bool gravity = P.integ.z > 0.5;
-    bool thin = int(P.disk_normal.w) == DISK_THIN;
+    bool thin = DISK_KIND == DISK_THIN;
     vec3 c0 = P.holes[0].xyz;
 
     vec3 a = gravity ? accel(x, v) : vec3(0.0);

@@ -66,19 +66,21 @@ float asinh_precise(float x) {
     return log(x + sqrt(x * x + 1.0));
 }
 
-// Carlson's R_F by duplication, to f32 precision.
-float carlson_rf(float x, float y, float z) {
+// R_F for three argument triples at once (x, y, z hold the first, second
+// and third argument of each): one loop instead of three.
+vec3 carlson_rf3(vec3 x, vec3 y, vec3 z) {
     for (int i = 0; i < 16; ++i) {
-        float a = (x + y + z) * (1.0 / 3.0);
-        float dx = 1.0 - x / a, dy = 1.0 - y / a, dz = 1.0 - z / a;
-        if (max(abs(dx), max(abs(dy), abs(dz))) < 0.02) {
-            float e2 = dx * dy - dz * dz;
-            float e3 = dx * dy * dz;
+        vec3 a = (x + y + z) * (1.0 / 3.0);
+        vec3 dx = 1.0 - x / a, dy = 1.0 - y / a, dz = 1.0 - z / a;
+        vec3 dm = max(abs(dx), max(abs(dy), abs(dz)));
+        if (max(dm.x, max(dm.y, dm.z)) < 0.02) {
+            vec3 e2 = dx * dy - dz * dz;
+            vec3 e3 = dx * dy * dz;
             return (1.0 - e2 * 0.1 + e3 * (1.0 / 14.0) + e2 * e2 * (1.0 / 24.0)
                     - e2 * e3 * (3.0 / 44.0)) * inversesqrt(a);
         }
-        float sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
-        float l = sx * (sy + sz) + sy * sz;
+        vec3 sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
+        vec3 l = sx * (sy + sz) + sy * sz;
         x = 0.25 * (x + l);
         y = 0.25 * (y + l);
         z = 0.25 * (z + l);
@@ -86,27 +88,35 @@ float carlson_rf(float x, float y, float z) {
     return inversesqrt((x + y + z) * (1.0 / 3.0));
 }
 
-// F(phi, k) for |phi| <= pi/2 from sin^2, cos^2 and 1 - k^2 sin^2.
-float incomplete_f(float sin2, float cos2, float delta2) {
-    return sqrt(max(sin2, 0.0)) * carlson_rf(max(cos2, 0.0), max(delta2, 0.0), 1.0);
+// Jacobi sn and cn (parameter m = 1 - mc) by the arithmetic-geometric mean
+// (Abramowitz & Stegun 16.4). The means depend only on mc, so a path keeps
+// them (AGM_STEPS fixed steps, unrolled, no divergence: c_n falls
+// quadratically, below f32 resolution by the seventh step down to
+// mc ~ 1e-12) and each sn costs only the descent.
+const int AGM_STEPS = 7;
+
+struct Agm {
+    float a[AGM_STEPS + 1];
+    float c[AGM_STEPS + 1];
+};
+
+Agm agm_of(float mc) {
+    Agm g;
+    g.a[0] = 1.0;
+    float b = sqrt(max(mc, 0.0));
+    g.c[0] = sqrt(max(1.0 - mc, 0.0));
+    for (int n = 0; n < AGM_STEPS; ++n) {
+        g.a[n + 1] = 0.5 * (g.a[n] + b);
+        g.c[n + 1] = 0.5 * (g.a[n] - b);
+        b = sqrt(g.a[n] * b);
+    }
+    return g;
 }
 
-// Jacobi sn and cn (parameter m = 1 - mc) by the arithmetic-geometric mean.
-vec2 jacobi_sn_cn(float w, float mc) {
-    float a[10], c[10];
-    a[0] = 1.0;
-    float b = sqrt(max(mc, 0.0));
-    c[0] = sqrt(max(1.0 - mc, 0.0));
-    int n = 0;
-    while (n < 9 && abs(c[n]) > 1e-7 * a[n]) {
-        a[n + 1] = 0.5 * (a[n] + b);
-        c[n + 1] = 0.5 * (a[n] - b);
-        b = sqrt(a[n] * b);
-        ++n;
-    }
-    float phi = exp2(float(n)) * a[n] * w;
-    for (int i = n; i >= 1; --i) {
-        phi = 0.5 * (phi + asin_precise(clamp(c[i] * sin(phi) / a[i], -1.0, 1.0)));
+vec2 jacobi_sn_cn(float w, Agm g) {
+    float phi = exp2(float(AGM_STEPS)) * g.a[AGM_STEPS] * w;
+    for (int i = AGM_STEPS; i >= 1; --i) {
+        phi = 0.5 * (phi + asin_precise(clamp(g.c[i] * sin(phi) / g.a[i], -1.0, 1.0)));
     }
     return vec2(sin(phi), cos(phi));
 }
@@ -123,117 +133,123 @@ struct LightPath {
     float w0, rate;          // elliptic argument at the camera, dw/dphi (signed)
     float phi_end;           // angle swept to escape or capture
     bool escapes;
+    Agm agm;                 // the means for sn and cn at this k
 };
 
 // The path of a ray starting at u0 with du/dphi = du (> 0 inward).
+//
+// Written as one straight line of code: each case only chooses the
+// arguments of the same three elliptic integrals (at the camera, at the end,
+// and K). On a CPU Vulkan driver such as lavapipe every branch of a shader
+// runs for every pixel under a mask, so three cases with their own integrals
+// would cost three times as much.
 LightPath light_path(float u0, float du) {
     LightPath p;
     float c = du * du + u0 * u0 * (1.0 - u0);
     float e = 4.0 / 27.0 - c;
     bool inward = du > 0.0;
-    if (e > 0.0) {
-        float theta = 2.0 * asin_precise(min(sqrt(6.75 * c), 1.0));
-        float theta_c = 2.0 * asin_precise(min(sqrt(6.75 * e), 1.0));
-        float t = theta * (1.0 / 3.0);
-        const float S = 1.1547005383792515;  // 2 / sqrt(3)
-        float d21 = S * sin(t);
-        float d31 = S * sin(t + 1.0471975511965976);
-        float d32 = S * sin(theta_c * (1.0 / 3.0));
-        float sth = sin(theta * (1.0 / 6.0));
-        float sum12 = (4.0 / 3.0) * sth * sth;
-        p.u1 = 0.5 * (sum12 - d21);
-        float u2 = p.u1 + d21;
-        p.u3 = 1.0 - sum12;
-        p.d21 = d21;
-        p.d32 = d32;
-        p.mc = d32 / d31;
-        p.kk = carlson_rf(0.0, p.mc, 1.0);
-        float rate = 0.5 * sqrt(d31);
-        float g0 = du * du;
-        if (u0 < 2.0 / 3.0) {
-            p.kind = PATH_SCATTERED;
-            float a1 = u0 - p.u1, a3 = p.u3 - u0;
-            float u2m = (a1 > 0.0 && a3 > 0.0) ? g0 / (a1 * a3) : u2 - u0;
-            p.w0 = incomplete_f(a1 / d21, max(u2m, 0.0) / d21, a3 / d31);
-            float w_esc = incomplete_f(-p.u1 / d21, u2 / d21, p.u3 / d31);
-            p.escapes = true;
-            if (inward) {
-                p.phi_end = (2.0 * p.kk - w_esc - p.w0) / rate;
-                p.rate = rate;
-            } else {
-                p.phi_end = (p.w0 - w_esc) / rate;
-                p.rate = -rate;
-            }
-        } else {
-            p.kind = PATH_TRAPPED;
-            float a1 = u0 - p.u1, a2 = u0 - u2;
-            float um3 = max((a1 > 0.0 && a2 > 0.0) ? g0 / (a1 * a2) : u0 - p.u3, 0.0);
-            float up2 = um3 + d32;
-            p.w0 = incomplete_f(um3 / up2, d32 / up2, d32 * a1 / (d31 * up2));
-            float hm3 = 1.0 - p.u3, hp2 = hm3 + d32;
-            float w_h = incomplete_f(hm3 / hp2, d32 / hp2, d32 * (1.0 - p.u1) / (d31 * hp2));
-            p.escapes = false;
-            if (inward) {
-                p.phi_end = (w_h - p.w0) / rate;
-                p.rate = rate;
-            } else {
-                p.phi_end = (w_h + p.w0) / rate;
-                p.rate = -rate;
-            }
-        }
+    bool three = e > 0.0;
+    float g0 = du * du;  // (u0 - u1)(u0 - u2)(u0 - u3)
+
+    // Three real roots: theta = acos(1 - 27c/2), pi - theta from e.
+    float theta = 2.0 * asin_precise(min(sqrt(6.75 * max(c, 0.0)), 1.0));
+    float theta_c = 2.0 * asin_precise(min(sqrt(6.75 * max(e, 0.0)), 1.0));
+    const float S = 1.1547005383792515;  // 2 / sqrt(3)
+    float t = theta * (1.0 / 3.0);
+    float d21 = S * sin(t);
+    float d31 = S * sin(t + 1.0471975511965976);
+    float d32 = S * sin(theta_c * (1.0 / 3.0));
+    float sth = sin(theta * (1.0 / 6.0));
+    float sum12 = (4.0 / 3.0) * sth * sth;
+    float u1_three = 0.5 * (sum12 - d21);
+    float u2 = u1_three + d21;
+    float u3 = 1.0 - sum12;
+    // One real root: u1 = 1/3 - 2/3 cosh(alpha/3), the pair m +- in with
+    // m - u1 = cosh(alpha/3), n^2 = sinh^2(alpha/3) / 3.
+    float alpha = 2.0 * asinh_precise(sqrt(6.75 * max(-e, 0.0)));
+    float ch = cosh(alpha * (1.0 / 3.0)), sh = sinh_precise(alpha * (1.0 / 3.0));
+    float n2 = sh * sh * (1.0 / 3.0);
+    float A = sqrt(ch * ch + n2);
+
+    p.u1 = three ? u1_three : 1.0 / 3.0 - (2.0 / 3.0) * ch;
+    p.u3 = u3;
+    p.d21 = three ? d21 : A;
+    p.d32 = d32;
+    p.mc = three ? d32 / d31 : n2 / (2.0 * A * (A + ch));
+    p.kind = three ? (u0 < 2.0 / 3.0 ? PATH_SCATTERED : PATH_TRAPPED) : PATH_PLUNGING;
+    float rate = three ? 0.5 * sqrt(d31) : sqrt(A);
+    float m = 1.0 - p.mc;
+
+    // The end point: escape (u = 0) or the horizon (u = 1).
+    p.escapes = p.kind == PATH_SCATTERED || (p.kind == PATH_PLUNGING && !inward);
+    float u_end = p.escapes ? 0.0 : 1.0;
+
+    // The two incomplete integrals F = sqrt(sin2) R_F(cos2, delta2, 1), their
+    // arguments per case (see src/physics/closed_form.rs):
+    //   scattered: sin2 = (u - u1)/(u2 - u1), cos2 = (u2 - u)/(u2 - u1), delta2 = (u3 - u)/(u3 - u1)
+    //   trapped:   sin2 = (u - u3)/(u - u2), cos2 = (u3 - u2)/(u - u2), delta2 = (u3 - u2)(u - u1)/((u3 - u1)(u - u2))
+    //   plunging:  cos = (A - v)/(A + v), sin2 = 4Av/(A + v)^2, delta2 = 1 - k^2 sin2, v = u - u1
+    // Differences from the root at the camera come from g0, without cancellation.
+    vec2 uu = vec2(u0, u_end);
+    vec2 a1 = uu - p.u1;
+    vec2 sin2, cos2, delta2;
+    if (p.kind == PATH_SCATTERED) {
+        vec2 a3 = u3 - uu;
+        float u2m0 = (a1.x > 0.0 && a3.x > 0.0) ? g0 / (a1.x * a3.x) : u2 - u0;
+        vec2 u2m = vec2(max(u2m0, 0.0), u2 - u_end);
+        sin2 = a1 / d21;
+        cos2 = u2m / d21;
+        delta2 = a3 / d31;
+    } else if (p.kind == PATH_TRAPPED) {
+        float a2 = u0 - u2;
+        float um30 = max((a1.x > 0.0 && a2 > 0.0) ? g0 / (a1.x * a2) : u0 - u3, 0.0);
+        vec2 um3 = vec2(um30, u_end - u3);
+        vec2 up2 = um3 + d32;
+        sin2 = um3 / up2;
+        cos2 = d32 / up2;
+        delta2 = d32 * a1 / (d31 * up2);
     } else {
-        p.kind = PATH_PLUNGING;
-        float alpha = 2.0 * asinh_precise(sqrt(-6.75 * e));
-        float ch = cosh(alpha * (1.0 / 3.0)), sh = sinh_precise(alpha * (1.0 / 3.0));
-        p.u1 = 1.0 / 3.0 - (2.0 / 3.0) * ch;
-        float n2 = sh * sh * (1.0 / 3.0);
-        float A = sqrt(ch * ch + n2);
-        p.d21 = A;
-        p.d32 = 0.0;
-        p.u3 = 0.0;
-        p.mc = n2 / (2.0 * A * (A + ch));
-        p.kk = carlson_rf(0.0, p.mc, 1.0);
-        float rate = sqrt(A);
-        float m = 1.0 - p.mc;
-        // W1(u) = F(acos((A - v) / (A + v)), k), v = u - u1.
-        float v = u0 - p.u1;
-        float cp = (A - v) / (A + v), s2 = 4.0 * A * v / ((A + v) * (A + v));
-        float f = incomplete_f(s2, cp * cp, 1.0 - m * s2);
-        p.w0 = v > A ? 2.0 * p.kk - f : f;
-        if (inward) {
-            v = 1.0 - p.u1;
-            p.escapes = false;
-            p.rate = rate;
-        } else {
-            v = -p.u1;
-            p.escapes = true;
-            p.rate = -rate;
-        }
-        cp = (A - v) / (A + v);
-        s2 = 4.0 * A * v / ((A + v) * (A + v));
-        f = incomplete_f(s2, cp * cp, 1.0 - m * s2);
-        float w_end = v > A ? 2.0 * p.kk - f : f;
-        p.phi_end = abs(w_end - p.w0) / rate;
+        vec2 cp = (A - a1) / (A + a1);
+        sin2 = 4.0 * A * a1 / ((A + a1) * (A + a1));
+        cos2 = cp * cp;
+        delta2 = 1.0 - m * sin2;
     }
-    p.phi_end = max(p.phi_end, 0.0);
+    vec3 f = carlson_rf3(vec3(max(cos2, 0.0), 0.0), vec3(max(delta2, 0.0), p.mc), vec3(1.0));
+    p.kk = f.z;
+    vec2 w = sqrt(max(sin2, 0.0)) * f.xy;
+    // Plunging: past phi = pi/2 (v > A), F = 2K - F(pi - phi).
+    if (p.kind == PATH_PLUNGING) {
+        w = mix(w, 2.0 * p.kk - w, greaterThan(a1, vec2(A)));
+    }
+    p.w0 = w.x;
+    float w_end = w.y;
+    // Scattered inward: through the periapsis (w = K) and out to 2K - w_esc.
+    if (p.kind == PATH_SCATTERED && inward) w_end = 2.0 * p.kk - w_end;
+    if (p.kind == PATH_TRAPPED && !inward) w_end = -w_end;
+    p.rate = inward ? rate : -rate;
+    p.phi_end = max((w_end - p.w0) / p.rate, 0.0);
+    p.agm = agm_of(p.mc);
     return p;
 }
 
-// u = rs / r at angle phi along the path.
+// u = rs / r at angle phi along the path: one sn/cn evaluation whatever the
+// kind (see light_path for why).
 float path_u(LightPath p, float phi) {
     float w = p.w0 + p.rate * phi;
     float k2 = 2.0 * p.kk;
-    if (p.kind == PATH_PLUNGING) {
-        bool far_half = w > p.kk;
-        float cn = jacobi_sn_cn(far_half ? k2 - w : max(w, 0.0), p.mc).y;
-        if (far_half) cn = -cn;
-        return p.u1 + p.d21 * (1.0 - cn) / (1.0 + cn);
-    }
+    // Scattered and trapped: sn^2 has period 2K and is even, so [0, K].
+    // Plunging: w in [0, 2K), and cn(2K - w) = -cn(w).
     float wr = w - k2 * floor(w / k2);
-    if (wr > p.kk) wr = k2 - wr;
-    vec2 sc = jacobi_sn_cn(wr, p.mc);
-    if (p.kind == PATH_SCATTERED) return p.u1 + p.d21 * sc.x * sc.x;
-    return p.u3 + p.d32 * sc.x * sc.x / max(sc.y * sc.y, 1e-30);
+    wr = wr > p.kk ? k2 - wr : wr;
+    bool plunging = p.kind == PATH_PLUNGING;
+    bool far_half = w > p.kk;
+    float arg = plunging ? (far_half ? k2 - w : max(w, 0.0)) : wr;
+    vec2 sc = jacobi_sn_cn(arg, p.agm);
+    float cn = plunging && far_half ? -sc.y : sc.y;
+    float sn2 = sc.x * sc.x;
+    if (plunging) return p.u1 + p.d21 * (1.0 - cn) / (1.0 + cn);
+    if (p.kind == PATH_SCATTERED) return p.u1 + p.d21 * sn2;
+    return p.u3 + p.d32 * sn2 / max(cn * cn, 1e-30);
 }
 
 #endif

@@ -1,4 +1,5 @@
-// Skies for escaped rays. Requires params.glsl, and blackbody(t) for star colours.
+// Skies for escaped rays. Requires params.glsl, blackbody(t) for star
+// colours, and the specialization constants SKY_KIND and GRID_PLANE.
 #ifndef SKY_GLSL
 #define SKY_GLSL
 
@@ -113,7 +114,7 @@ vec3 sky_image(vec3 d, float pixel_angle) {
 // escaping rays reach along their final straight line (the path is straight
 // to well under a pixel out there), drawn over the sky.
 void grid_plane(vec3 p, vec3 d, float pixel_angle, inout vec3 color) {
-    if (P.plane_pos.w < 0.5) return;
+    if (!GRID_PLANE) return;
     vec3 n = P.plane_n.xyz;
     float dn = dot(d, n);
     if (dn >= -1e-6) return;                         // moving away from its face
@@ -141,7 +142,7 @@ void grid_plane(vec3 p, vec3 d, float pixel_angle, inout vec3 color) {
 }
 
 vec3 sky_color(vec3 d, float pixel_angle) {
-    int kind = int(P.sky.x);
+    const int kind = SKY_KIND;
     if (kind == SKY_IMAGE) return sky_image(d, pixel_angle);
     if (kind == SKY_CHECKER) return sky_checker(d);
     if (kind == SKY_STARS) return sky_stars(d, pixel_angle);

@@ -29,10 +29,9 @@ const RAYMARCH_BINDINGS: [BindingKind; 4] = [
 
 /// Pipelines and samplers the passes use, created once per renderer.
 pub struct Pipelines {
-    /// Ray march, by [general or one hole (Binet)][thin or no disk, or volumetric].
-    pub raymarch: [[ComputePipeline; 2]; 2],
-    /// Ray march writing the geodesic AOV, by [general or one hole].
-    pub raymarch_aov: [ComputePipeline; 2],
+    /// Ray-march pipelines by variant, built the first time a scene needs one.
+    raymarch: std::sync::Mutex<std::collections::HashMap<raymarch::Variant, Arc<ComputePipeline>>>,
+    gpu: Arc<Gpu>,
     pub composite: ComputePipeline,
     /// The composite without tone map, writing linear HDR (`--exr-post`).
     pub composite_hdr: ComputePipeline,
@@ -47,20 +46,8 @@ impl Pipelines {
     /// Builds every pipeline from the embedded SPIR-V.
     pub fn new(gpu: &Arc<Gpu>) -> Result<Self> {
         Ok(Pipelines {
-            raymarch: [
-                [
-                    raymarch_pipeline(gpu, "raymarch", RAYMARCH, false, false)?,
-                    raymarch_pipeline(gpu, "raymarch (volume)", RAYMARCH, false, true)?,
-                ],
-                [
-                    raymarch_pipeline(gpu, "raymarch (one hole)", RAYMARCH, true, false)?,
-                    raymarch_pipeline(gpu, "raymarch (one hole, volume)", RAYMARCH, true, true)?,
-                ],
-            ],
-            raymarch_aov: [
-                raymarch_pipeline(gpu, "raymarch aov", RAYMARCH_AOV, false, false)?,
-                raymarch_pipeline(gpu, "raymarch aov (one hole)", RAYMARCH_AOV, true, false)?,
-            ],
+            raymarch: std::sync::Mutex::new(std::collections::HashMap::new()),
+            gpu: gpu.clone(),
             composite: composite_pipeline(gpu, "composite", crate::shaders::COMPOSITE)?,
             composite_hdr: composite_pipeline(
                 gpu,
@@ -94,18 +81,32 @@ impl Pipelines {
     }
 }
 
-/// The ray march specialised for one hole (constant 0, `ONE_HOLE`) and for a
-/// volumetric disk (constant 1, `VOLUME`): code a scene does not use is then
-/// compiled out, not just skipped.
-fn raymarch_pipeline(
-    gpu: &Arc<Gpu>,
-    name: &str,
-    spirv: &[u8],
-    one_hole: bool,
-    volume: bool,
-) -> Result<ComputePipeline> {
-    let constants = [u32::from(one_hole), u32::from(volume)];
-    ComputePipeline::with_constants(gpu, name, spirv, &RAYMARCH_BINDINGS, 0, &constants)
+impl Pipelines {
+    /// The ray march specialised for a scene's variant (the specialization
+    /// constants of raymarch.comp), built on first use and kept. Code a scene
+    /// does not use is compiled out, not just skipped: on a CPU driver such as
+    /// lavapipe every branch runs under a mask for every pixel, so a branch
+    /// not taken costs as much as one taken.
+    pub fn raymarch(&self, variant: raymarch::Variant) -> Result<Arc<ComputePipeline>> {
+        let mut cache = self
+            .raymarch
+            .lock()
+            .map_err(|_| crate::Error::Other("the pipeline cache lock was poisoned".into()))?;
+        if let Some(p) = cache.get(&variant) {
+            return Ok(p.clone());
+        }
+        let spirv = if variant.aov { RAYMARCH_AOV } else { RAYMARCH };
+        let p = Arc::new(ComputePipeline::with_constants(
+            &self.gpu,
+            &variant.name(),
+            spirv,
+            &RAYMARCH_BINDINGS,
+            0,
+            &variant.constants(),
+        )?);
+        cache.insert(variant, p.clone());
+        Ok(p)
+    }
 }
 
 fn composite_pipeline(gpu: &Arc<Gpu>, name: &str, spirv: &[u8]) -> Result<ComputePipeline> {

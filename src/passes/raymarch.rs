@@ -71,6 +71,23 @@ pub struct RaymarchParams {
     pub holes: [[f32; 4]; MAX_HOLES],
 }
 
+fn disk_kind(scene: &Scene) -> u32 {
+    match scene.disk.kind {
+        DiskKind::None => glsl::DISK_NONE,
+        DiskKind::Thin => glsl::DISK_THIN,
+        DiskKind::Volumetric => glsl::DISK_VOLUME,
+    }
+}
+
+fn sky_kind(scene: &Scene) -> u32 {
+    match scene.sky.kind {
+        SkyKind::Black => glsl::SKY_BLACK,
+        SkyKind::Checker => glsl::SKY_CHECKER,
+        SkyKind::Stars => glsl::SKY_STARS,
+        SkyKind::Image | SkyKind::Cubemap => glsl::SKY_IMAGE,
+    }
+}
+
 fn v4(v: glam::DVec3, w: f64) -> [f32; 4] {
     [v.x as f32, v.y as f32, v.z as f32, w as f32]
 }
@@ -89,11 +106,7 @@ impl RaymarchParams {
         for (slot, h) in holes.iter_mut().zip(&scene.black_holes) {
             *slot = v4(glam::DVec3::from(h.position), h.rs);
         }
-        let disk_kind = f64::from(match scene.disk.kind {
-            DiskKind::None => glsl::DISK_NONE,
-            DiskKind::Thin => glsl::DISK_THIN,
-            DiskKind::Volumetric => glsl::DISK_VOLUME,
-        });
+        let disk_kind = f64::from(disk_kind(scene));
         let d = &scene.disk;
         let plane_n = glam::DVec3::from(scene.plane.normal).normalize();
         // An in-plane axis: world x projected, or z if the normal is along x.
@@ -102,14 +115,14 @@ impl RaymarchParams {
             plane_u = glam::DVec3::Z - plane_n * plane_n.z;
         }
         let plane_u = plane_u.normalize();
-        let (sky_kind, sky_param) = match scene.sky.kind {
-            SkyKind::Black => (glsl::SKY_BLACK, 0.0),
-            SkyKind::Checker => (glsl::SKY_CHECKER, f64::from(scene.sky.squares)),
-            SkyKind::Stars => (glsl::SKY_STARS, scene.sky.star_density),
+        let sky_param = match scene.sky.kind {
+            SkyKind::Black => 0.0,
+            SkyKind::Checker => f64::from(scene.sky.squares),
+            SkyKind::Stars => scene.sky.star_density,
             // The image's width (for the mip level) is filled in by the renderer.
-            SkyKind::Image | SkyKind::Cubemap => (glsl::SKY_IMAGE, 0.0),
+            SkyKind::Image | SkyKind::Cubemap => 0.0,
         };
-        let sky_kind = sky_kind as f32;
+        let sky_kind = sky_kind(scene) as f32;
         let (e1, e2) = crate::physics::geodesic::disk_basis(glam::DVec3::from(scene.disk.normal));
         let obs = scene.observer();
         RaymarchParams {
@@ -190,11 +203,56 @@ pub struct RaymarchInputs<'h> {
     pub output: RaymarchOutput,
     /// Size of the image it writes (the window may render at a fraction).
     pub size: (u32, u32),
-    /// One hole with gravity: the planar (Binet) path, compiled in by a
-    /// specialization constant.
+    /// Which specialisation of the shader the scene needs.
+    pub variant: Variant,
+}
+
+/// A specialisation of raymarch.comp: its constants, and the AOV build.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Variant {
+    /// The geodesic AOV build (`GEODESIC_AOV`).
+    pub aov: bool,
+    /// One hole with gravity: the closed-form path (constant 0).
     pub one_hole: bool,
-    /// A volumetric disk (specialization constant).
-    pub volume: bool,
+    /// The disk kind, `glsl::DISK_*` (constant 1).
+    pub disk: u32,
+    /// The sky kind, `glsl::SKY_*` (constant 2).
+    pub sky: u32,
+    /// The grid plane is on (constant 3).
+    pub plane: bool,
+}
+
+impl Variant {
+    /// The variant a scene needs.
+    pub fn of(scene: &Scene, aov: bool) -> Variant {
+        Variant {
+            aov,
+            one_hole: scene.black_holes.len() == 1 && scene.physics.gravity,
+            disk: disk_kind(scene),
+            sky: sky_kind(scene),
+            plane: scene.plane.enabled,
+        }
+    }
+
+    pub fn constants(&self) -> [u32; 4] {
+        [
+            u32::from(self.one_hole),
+            self.disk,
+            self.sky,
+            u32::from(self.plane),
+        ]
+    }
+
+    pub fn name(&self) -> String {
+        format!(
+            "raymarch{} (one hole {}, disk {}, sky {}, plane {})",
+            if self.aov { " aov" } else { "" },
+            self.one_hole,
+            self.disk,
+            self.sky,
+            self.plane
+        )
+    }
 }
 
 /// Adds the ray march; returns the HDR image (or the AOV) it writes.
@@ -209,21 +267,13 @@ pub fn add_raymarch<'a>(
         sky,
         output,
         size: (width, height),
-        one_hole,
-        volume,
+        variant,
     } = inputs;
-    let (name, format, pipeline) = match output {
-        RaymarchOutput::Beauty => (
-            "hdr",
-            HDR_FORMAT,
-            &pipelines.raymarch[usize::from(one_hole)][usize::from(volume)],
-        ),
-        RaymarchOutput::Geodesic => (
-            "geodesic aov",
-            AOV_FORMAT,
-            &pipelines.raymarch_aov[usize::from(one_hole)],
-        ),
+    let (name, format) = match output {
+        RaymarchOutput::Beauty => ("hdr", HDR_FORMAT),
+        RaymarchOutput::Geodesic => ("geodesic aov", AOV_FORMAT),
     };
+
     let mut hdr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
     let (out, lut, sky_tex, ubo) = (hdr.clone(), disk_lut.clone(), sky.clone(), params.clone());
     let mut pass = graph
@@ -235,9 +285,11 @@ pub fn add_raymarch<'a>(
     }
     pass.write(&mut hdr, Access::ComputeStorageWrite, Mips::ALL)
         .record(move |ctx| {
+            // Built on first use (Renderer::prepare_scene builds it ahead).
+            let pipeline = pipelines.raymarch(variant)?;
             dispatch_2d(
                 ctx,
-                pipeline,
+                &pipeline,
                 &[
                     Descriptor::StorageImage(ctx.view(&out, 0)),
                     Descriptor::StorageBuffer(ctx.buffer(&ubo)),

@@ -185,6 +185,10 @@ impl Renderer {
             self.wait_idle()?;
             self.resources.ensure_sky(scene)?;
         }
+        // The ray march specialised for this scene, built now rather than
+        // while a frame records (a new variant takes lavapipe a moment).
+        self.pipelines
+            .raymarch(raymarch::Variant::of(scene, false))?;
         Ok(())
     }
 

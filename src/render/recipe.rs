@@ -7,7 +7,7 @@
 
 use crate::graph::{BufferHandle, Graph, ImageHandle};
 use crate::passes::{self, Pipelines, composite, raymarch};
-use crate::scene::{Bloom, DiskKind, Post, Scene};
+use crate::scene::{Bloom, Post, Scene};
 
 /// Where the frame's linear HDR radiance comes from.
 pub enum HdrSource<'h> {
@@ -82,8 +82,7 @@ pub fn add_frame<'a>(
                     raymarch::RaymarchOutput::Beauty
                 },
                 size,
-                one_hole: scene.black_holes.len() == 1 && scene.physics.gravity,
-                volume: scene.disk.kind == DiskKind::Volumetric,
+                variant: raymarch::Variant::of(scene, output == FrameOutput::Geodesic),
             },
         ),
         HdrSource::Image(image) => image.clone(),
