@@ -69,6 +69,35 @@ pub struct Frame {
 pub struct PassTiming {
     pub name: String,
     pub ms: f64,
+    /// Start, from the frame's first timestamp.
+    pub start_ms: f64,
+}
+
+/// CPU time of each phase of one frame, milliseconds: building the graph
+/// (and writing the parameters), compiling it, recording the command buffer,
+/// submitting, waiting for the fence, and decoding the readback.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct CpuPhases {
+    pub build_ms: f64,
+    pub compile_ms: f64,
+    pub record_ms: f64,
+    pub submit_ms: f64,
+    pub wait_ms: f64,
+    pub readback_ms: f64,
+}
+
+impl CpuPhases {
+    /// (name, milliseconds) in the order they happen.
+    pub fn named(&self) -> [(&'static str, f64); 6] {
+        [
+            ("build", self.build_ms),
+            ("compile", self.compile_ms),
+            ("record", self.record_ms),
+            ("submit", self.submit_ms),
+            ("wait", self.wait_ms),
+            ("readback", self.readback_ms),
+        ]
+    }
 }
 
 /// GPU time per pass of one frame (empty when the device has no timestamps).
@@ -77,6 +106,11 @@ pub struct FrameTimings {
     pub passes: Vec<PassTiming>,
     /// From the first pass's start to the last pass's end.
     pub frame_ms: f64,
+    /// CPU phases (offscreen frames; the window fills what it can).
+    pub cpu: CpuPhases,
+    /// Wall time from the end of the submit to the fence (the frame's GPU
+    /// time as the CPU sees it: the fall-back without timestamps).
+    pub wall_ms: f64,
 }
 
 impl std::fmt::Display for FrameTimings {

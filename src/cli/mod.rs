@@ -113,12 +113,19 @@ pub enum Command {
     Profile {
         #[command(flatten)]
         view: View,
-        /// Frames to time (after one warm-up frame).
+        /// Frames to time (after the warm-up frames).
         #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u32).range(1..=100000))]
         frames: u32,
+        /// Frames rendered first and not timed (pipeline builds, allocation, caches).
+        #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(0..=10000))]
+        warmup: u32,
         /// Also write the figures as JSON.
         #[arg(long)]
         json: Option<PathBuf>,
+        /// Write Chrome trace-event JSON of the timed frames (open it in
+        /// Perfetto or chrome://tracing): a track of GPU passes and one of CPU phases.
+        #[arg(long)]
+        trace: Option<PathBuf>,
     },
 }
 
@@ -197,7 +204,21 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
             exr_post,
         } => render::run(view, out, aov, frames, exr_post),
         Command::Trace { scene, out } => trace::run(scene.as_deref(), &out),
-        Command::Profile { view, frames, json } => profile::run_command(view, frames, json),
+        Command::Profile {
+            view,
+            frames,
+            warmup,
+            json,
+            trace,
+        } => profile::run_command(
+            view,
+            profile::Options {
+                frames,
+                warmup,
+                json,
+                trace,
+            },
+        ),
         Command::Window {
             view,
             render_scale,

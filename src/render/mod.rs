@@ -232,6 +232,7 @@ impl Renderer {
         // Offscreen frames are synchronous: always slot 0, once it is idle.
         const SLOT: usize = 0;
         self.slots[SLOT].wait()?;
+        let build = std::time::Instant::now();
         self.write_params(SLOT, scene, (width, height), (0.0, 0.0))?;
         let needed = u64::from(width) * u64::from(height) * kind.texel_bytes();
         let gpu = self.gpu.clone();
@@ -263,7 +264,14 @@ impl Renderer {
             None,
         );
         copy::add_copy_to_buffer(&mut g, &result, &mut out_buf);
-        finish_offscreen(&mut self.slots[SLOT], &self.gpu, g, (width, height), kind)
+        finish_offscreen(
+            &mut self.slots[SLOT],
+            &self.gpu,
+            g,
+            (width, height),
+            kind,
+            build,
+        )
     }
 
     /// Runs the post-processing part of the recipe (bloom, exposure, tone
@@ -296,6 +304,7 @@ impl Renderer {
         staging.mapped_mut()?.copy_from_slice(bytes);
         const SLOT: usize = 0;
         self.slots[SLOT].wait()?;
+        let build = std::time::Instant::now();
         let needed = 4 * texels as u64;
         let gpu = self.gpu.clone();
         let readback = self.slots[SLOT].ensure_readback(&gpu, needed)?.binding();
@@ -330,6 +339,7 @@ impl Renderer {
             g,
             (width, height),
             OutputKind::Ldr,
+            build,
         );
         drop(staging);
         frame
@@ -481,15 +491,20 @@ fn finish_offscreen(
     g: Graph<'_>,
     (width, height): (u32, u32),
     kind: OutputKind,
+    build_start: std::time::Instant,
 ) -> Result<Frame> {
+    let build_ms = slots::ms_since(build_start);
     slot.submit(gpu, g, &[], &[])?;
-    let timings = slot.wait()?.unwrap_or_default();
+    let mut timings = slot.wait()?.unwrap_or_default();
+    timings.cpu.build_ms = build_ms;
+    let readback_start = std::time::Instant::now();
     let readback = slot
         .readback
         .as_ref()
         .ok_or_else(|| Error::Other("readback buffer missing".into()))?;
     let needed = u64::from(width) * u64::from(height) * kind.texel_bytes();
     let pixels = Pixels::decode(kind, &readback.mapped()?[..needed as usize]);
+    timings.cpu.readback_ms = slots::ms_since(readback_start);
     Ok(Frame {
         width,
         height,

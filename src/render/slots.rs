@@ -4,11 +4,12 @@
 //! parameter buffer, timestamps and readback touched again.
 
 use std::sync::Arc;
+use std::time::Instant;
 
 use ash::vk;
 use gpu_allocator::MemoryLocation;
 
-use crate::frame::{FrameTimings, PassTiming};
+use crate::frame::{CpuPhases, FrameTimings, PassTiming};
 use crate::graph::{self, Graph, TransientPool};
 use crate::passes::raymarch::RaymarchParams;
 use crate::vk::{Buffer, CommandContext, Gpu, TimestampPool};
@@ -34,6 +35,11 @@ pub struct FrameSlot {
     timed: Vec<String>,
     /// Whether a submission is in flight whose timings are not read yet.
     pending: bool,
+    /// CPU phases of the last submission (compile, record, submit, wait).
+    cpu: CpuPhases,
+    /// When the last submission went to the queue.
+    submitted: Option<Instant>,
+    wall_ms: f64,
     pub commands: CommandContext,
 }
 
@@ -54,6 +60,9 @@ impl FrameSlot {
             timestamps: TimestampPool::new(gpu, 2 * MAX_TIMED_PASSES)?,
             timed: Vec::new(),
             pending: false,
+            cpu: CpuPhases::default(),
+            submitted: None,
+            wall_ms: 0.0,
             commands: CommandContext::new(gpu)?,
         })
     }
@@ -62,12 +71,20 @@ impl FrameSlot {
     /// nothing was submitted since the last call). After this the slot's
     /// resources are free to reuse.
     pub fn wait(&mut self) -> Result<Option<FrameTimings>> {
+        let t = Instant::now();
         self.commands.wait()?;
+        self.cpu.wait_ms = ms_since(t);
+        if let Some(s) = self.submitted.take() {
+            self.wall_ms = ms_since(s);
+        }
         if !self.pending {
             return Ok(None);
         }
         self.pending = false;
-        self.read_timings().map(Some)
+        let mut timings = self.read_timings()?;
+        timings.cpu = self.cpu;
+        timings.wall_ms = self.wall_ms;
+        Ok(Some(timings))
     }
 
     /// Makes sure the readback buffer holds at least `needed` bytes (the slot
@@ -98,7 +115,10 @@ impl FrameSlot {
         waits: &[(vk::Semaphore, vk::PipelineStageFlags2)],
         signals: &[vk::Semaphore],
     ) -> Result<()> {
+        let t = Instant::now();
         let compiled = g.compile()?;
+        self.cpu.compile_ms = ms_since(t);
+        let t = Instant::now();
         let cmd = self.commands.begin()?;
         self.timed = graph::execute::execute(
             g,
@@ -108,7 +128,11 @@ impl FrameSlot {
             &mut self.transients,
             self.timestamps.as_ref(),
         )?;
+        self.cpu.record_ms = ms_since(t);
+        let t = Instant::now();
         self.commands.submit(waits, signals)?;
+        self.cpu.submit_ms = ms_since(t);
+        self.submitted = Some(Instant::now());
         self.pending = true;
         Ok(())
     }
@@ -129,9 +153,19 @@ impl FrameSlot {
             .map(|(i, n)| PassTiming {
                 name: n.clone(),
                 ms: (ns[2 * i + 1] - ns[2 * i]) * 1e-6,
+                start_ms: ns[2 * i] * 1e-6,
             })
             .collect();
         let frame_ms = ns.last().copied().unwrap_or(0.0) * 1e-6;
-        Ok(FrameTimings { passes, frame_ms })
+        Ok(FrameTimings {
+            passes,
+            frame_ms,
+            ..FrameTimings::default()
+        })
     }
+}
+
+/// Milliseconds since `t`.
+pub fn ms_since(t: Instant) -> f64 {
+    t.elapsed().as_secs_f64() * 1e3
 }
