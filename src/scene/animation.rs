@@ -31,6 +31,12 @@ pub enum CameraPath {
     Orbit,
     /// Straight-line interpolation between `[[animation.keyframe]]`s.
     Keyframes,
+    /// Falling radially from rest at infinity into the first hole, along the
+    /// line from its centre through the camera, by the free-fall law
+    /// r^(3/2) = r0^(3/2) - (3/2) √rs τ (τ: the faller's proper time), until
+    /// 1.05 rs; `fall_seconds` of animation take it there. Pair it with
+    /// `observer = "falling"`.
+    Fall,
 }
 
 /// The `[animation]` section.
@@ -47,6 +53,8 @@ pub struct Animation {
     pub inclination_deg: f64,
     #[serde(rename = "keyframe")]
     pub keyframes: Vec<Keyframe>,
+    /// `camera = "fall"`: seconds of animation from the start to 1.05 rs.
+    pub fall_seconds: f64,
 }
 
 impl Default for Animation {
@@ -58,6 +66,7 @@ impl Default for Animation {
             orbit_speed_deg: 10.0,
             inclination_deg: 3.0,
             keyframes: Vec::new(),
+            fall_seconds: 10.0,
         }
     }
 }
@@ -68,10 +77,32 @@ impl Animation {
         index as f64 / self.fps
     }
 
-    /// The camera at time `t`.
-    pub fn camera_at(&self, base: &Camera, t: f64) -> Camera {
+    /// The radius (from `centre`) of a camera that started falling at `r0`
+    /// from rest at infinity, `t` seconds into the animation.
+    pub fn fall_radius(&self, r0: f64, rs: f64, t: f64) -> f64 {
+        let r_end = (1.05 * rs).min(r0);
+        // Proper time from r0 to r_end, spread over fall_seconds.
+        let tau_total = (2.0 / 3.0) * (r0.powf(1.5) - r_end.powf(1.5)) / rs.sqrt();
+        let tau = (t / self.fall_seconds).clamp(0.0, 1.0) * tau_total;
+        (r0.powf(1.5) - 1.5 * rs.sqrt() * tau)
+            .max(r_end.powf(1.5))
+            .powf(2.0 / 3.0)
+    }
+
+    /// The camera at time `t`; `hole` is the first hole's (centre, rs), which
+    /// the fall heads for.
+    pub fn camera_at(&self, base: &Camera, t: f64, hole: (DVec3, f64)) -> Camera {
         match self.camera {
             CameraPath::Static => base.clone(),
+            CameraPath::Fall => {
+                let (centre, rs) = hole;
+                let rel = DVec3::from(base.position) - centre;
+                let r = self.fall_radius(rel.length(), rs, t);
+                Camera {
+                    position: (centre + rel.normalize_or_zero() * r).to_array(),
+                    ..base.clone()
+                }
+            }
             CameraPath::Orbit => {
                 let target = DVec3::from(base.look_at);
                 let start = DVec3::from(base.position) - target;
@@ -129,6 +160,33 @@ impl Animation {
 mod tests {
     use super::*;
 
+    const HOLE: (DVec3, f64) = (DVec3::ZERO, 1.0);
+
+    #[test]
+    fn fall_follows_the_free_fall_law_to_the_horizon() {
+        let anim = Animation {
+            camera: CameraPath::Fall,
+            fall_seconds: 10.0,
+            ..Animation::default()
+        };
+        let base = Camera {
+            position: [0.0, 0.0, -20.0],
+            ..Camera::default()
+        };
+        let r = |t: f64| DVec3::from(anim.camera_at(&base, t, HOLE).position).length();
+        assert!((r(0.0) - 20.0).abs() < 1e-12);
+        assert!((r(10.0) - 1.05).abs() < 1e-12 && (r(99.0) - 1.05).abs() < 1e-12);
+        // dr/dτ = -√(rs/r): the speed grows as it falls.
+        let (a, b, c) = (r(2.0), r(5.0), r(8.0));
+        assert!(a > b && b > c && (a - b) < (b - c), "{a} {b} {c}");
+        // r^(3/2) falls linearly in time.
+        let lin = |t: f64| r(t).powf(1.5);
+        assert!(((lin(2.0) - lin(4.0)) - (lin(6.0) - lin(8.0))).abs() < 1e-9);
+        // It stays on the line from the hole through the start.
+        let p = anim.camera_at(&base, 5.0, HOLE).position;
+        assert!(p[0] == 0.0 && p[1] == 0.0 && p[2] < 0.0);
+    }
+
     #[test]
     fn orbit_starts_at_the_camera_and_keeps_its_distance() {
         let base = Camera::default();
@@ -137,7 +195,7 @@ mod tests {
             inclination_deg: (0.8f64 / 15.0).atan().to_degrees(),
             ..Animation::default()
         };
-        let c0 = anim.camera_at(&base, 0.0);
+        let c0 = anim.camera_at(&base, 0.0, HOLE);
         for (a, b) in c0.position.iter().zip(base.position) {
             assert!(
                 (a - b).abs() < 1e-9,
@@ -148,11 +206,11 @@ mod tests {
         }
         let r0 = DVec3::from(base.position).length();
         for t in [1.0, 4.5, 36.0] {
-            let c = anim.camera_at(&base, t);
+            let c = anim.camera_at(&base, t, HOLE);
             assert!((DVec3::from(c.position).length() - r0).abs() < 1e-9);
         }
         // A quarter turn after 9 s at 10 deg/s: from -z to +x (counter-clockwise from +y).
-        let q = anim.camera_at(&base, 9.0);
+        let q = anim.camera_at(&base, 9.0, HOLE);
         assert!(
             q.position[0] > 14.0 && q.position[2].abs() < 1e-6,
             "{:?}",
@@ -174,8 +232,8 @@ mod tests {
             keyframes: vec![k(0.0, 0.0), k(2.0, 4.0)],
             ..Animation::default()
         };
-        assert_eq!(anim.camera_at(&base, 0.0).position[0], 0.0);
-        assert!((anim.camera_at(&base, 1.0).position[0] - 2.0).abs() < 1e-12);
-        assert_eq!(anim.camera_at(&base, 5.0).position[0], 4.0);
+        assert_eq!(anim.camera_at(&base, 0.0, HOLE).position[0], 0.0);
+        assert!((anim.camera_at(&base, 1.0, HOLE).position[0] - 2.0).abs() < 1e-12);
+        assert_eq!(anim.camera_at(&base, 5.0, HOLE).position[0], 4.0);
     }
 }

@@ -51,6 +51,11 @@ pub const PRESETS: &[(&str, &str, &str)] = &[
         "looking down the disk's axis",
         include_str!("presets/top-down.toml"),
     ),
+    (
+        "falling",
+        "falling straight in from rest at infinity (observer and animation)",
+        include_str!("presets/falling.toml"),
+    ),
 ];
 
 /// Names of the built-in presets, for `--help`.
@@ -63,7 +68,13 @@ impl Scene {
     pub fn at_frame(&self, index: u64) -> Scene {
         let t = self.animation.time_of(index);
         Scene {
-            camera: self.animation.camera_at(&self.camera, t),
+            camera: self.animation.camera_at(
+                &self.camera,
+                t,
+                self.black_holes
+                    .first()
+                    .map_or((DVec3::ZERO, 1.0), |h| (DVec3::from(h.position), h.rs)),
+            ),
             time: t,
             ..self.clone()
         }

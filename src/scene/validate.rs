@@ -285,6 +285,7 @@ impl Scene {
             a.inclination_deg,
             "must be between -90 and 90 (the camera's up is +y)",
         )?;
+        positive(&key("fall_seconds"), a.fall_seconds)?;
         rule(
             a.camera != CameraPath::Keyframes || !a.keyframes.is_empty(),
             &key("camera"),
