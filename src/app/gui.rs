@@ -14,6 +14,7 @@ use egui::{Color32, DragValue, Ui};
 
 use crate::frame::FrameTimings;
 use crate::graph::{Graph, ImageHandle, Mips};
+use crate::physics::observer::ObserverKind;
 use crate::render::Overlay;
 use crate::scene::{DiskKind, PRESETS, Scene, SkyKind, Tonemap, VolumeColor};
 use crate::vk::{Access, Gpu};
@@ -342,6 +343,17 @@ fn scene_editor(ui: &mut Ui, s: &mut Scene) {
             vec3(ui, "look_at", &mut s.camera.look_at, 0.05);
             vec3(ui, "up", &mut s.camera.up, 0.01);
             num(ui, "vfov_deg", &mut s.camera.vfov_deg, 0.2);
+            let options: Vec<(ObserverKind, &str)> =
+                ObserverKind::ALL.iter().map(|k| (*k, k.name())).collect();
+            choice(ui, "observer", &mut s.camera.observer, &options);
+            ui.label(match s.camera.observer {
+                ObserverKind::Static => "at rest where it is",
+                ObserverKind::Orbiting => "on a circular orbit, moving with the disk",
+                ObserverKind::Falling => "falling straight in from rest far away",
+                ObserverKind::Flat => {
+                    "pixel directions used as coordinate directions (simple renderers)"
+                }
+            });
         });
     egui::CollapsingHeader::new("black holes").show(ui, |ui| {
         if s.black_holes.len() > 1 {
