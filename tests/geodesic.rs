@@ -325,3 +325,31 @@ fn two_holes_follow_the_f64_reference() {
         "binary: {d:e} {r:e} {a:e}"
     );
 }
+
+/// The accuracy-versus-cost table of the README: the one-hole closed form,
+/// and the general integrator (the binary preset's two holes) at three
+/// tolerances, against the f64 reference. Run with
+/// `cargo test --release --test geodesic -- --ignored --nocapture`; the
+/// milliseconds come from `blackhole profile` on the same scenes.
+#[test]
+#[ignore]
+fn accuracy_versus_quality() {
+    let mut f = compare("default", [0.0, 0.8, -15.0], "");
+    println!(
+        "closed form (one hole): escape dir p99 {:.1e} rad, disk radius p99 {:.1e} rs",
+        p99(&mut f.dir),
+        p99(&mut f.radius)
+    );
+    for tol in ["1e-4", "1e-5", "1e-6"] {
+        let extra = format!(
+            "[[black_hole]]\nposition = [-2.5, 0.0, 0.0]\nrs = 0.6\n\n[[black_hole]]\nposition = [2.5, 0.0, 0.0]\nrs = 0.6\n[quality]\ntolerance = {tol}\n"
+        );
+        let mut f = compare("binary", [0.0, 1.5, -15.0], &extra);
+        println!(
+            "integrator (two holes), tolerance {tol}: escape dir p99 {:.1e} rad, disk radius p99 {:.1e} rs, edge rays {}",
+            p99(&mut f.dir),
+            p99(&mut f.radius),
+            f.edge
+        );
+    }
+}
