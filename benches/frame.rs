@@ -23,9 +23,14 @@ fn frames(c: &mut Criterion) {
         }
     };
     let mut group = c.benchmark_group("frame");
-    group.sample_size(10).measurement_time(Duration::from_secs(5));
+    group
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(5));
     let cases: [(&str, &[(u32, u32)]); 3] = [
-        ("default", &[(320, 180), (640, 360), (1280, 720), (1920, 1080)]),
+        (
+            "default",
+            &[(320, 180), (640, 360), (1280, 720), (1920, 1080)],
+        ),
         ("doppler", &[(1280, 720)]),
         ("interstellar", &[(320, 180), (640, 360)]),
     ];
@@ -71,13 +76,15 @@ fn light_paths(c: &mut Criterion) {
         })
     });
     let opts = TraceOptions::default();
-    group.sample_size(10).bench_function("integrator (tolerance 1e-12)", |b| {
-        b.iter(|| {
-            for d in &dirs {
-                black_box(trace(&[hole], Some(&disk), x0, *d, &opts));
-            }
-        })
-    });
+    group
+        .sample_size(10)
+        .bench_function("integrator (tolerance 1e-12)", |b| {
+            b.iter(|| {
+                for d in &dirs {
+                    black_box(trace(&[hole], Some(&disk), x0, *d, &opts));
+                }
+            })
+        });
     group.finish();
 }
 
