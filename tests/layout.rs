@@ -65,6 +65,8 @@ fn raymarch_params_match_the_glsl_block() {
         offset_of!(RaymarchParams, vol1),
         offset_of!(RaymarchParams, sky),
         offset_of!(RaymarchParams, integ),
+        offset_of!(RaymarchParams, observer),
+        offset_of!(RaymarchParams, observer_r),
         offset_of!(RaymarchParams, counts),
         offset_of!(RaymarchParams, holes),
     ];
