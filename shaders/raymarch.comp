@@ -214,7 +214,9 @@ Hit trace_planar(vec3 x, vec3 d) {
     vec3 e2 = cross(nrm, e1);
     float u0 = rs / r0;
     float du = -(dot(d, e1) / dot(d, e2)) * u0;
-    LightPath path = light_path(u0, du);
+    // The thin disk's annulus in u (anything for other disks).
+    float u_lo = rs / max(P.disk.y, 1e-6), u_hi = rs / max(P.disk.x, 1e-6);
+    LightPath path = light_path(u0, du, u_lo, min(u_hi, 1.0));
     // Impact parameter b (world units) and the photon's angular momentum
     // about the disk axis (the ray runs backwards: -nrm).
     float b_imp = rs * inversesqrt(max(du * du + u0 * u0 * (1.0 - u0), 1e-30));
@@ -227,9 +229,15 @@ Hit trace_planar(vec3 x, vec3 d) {
     if (kind != DISK_NONE && tilt > 1e-6) {
         float phi0 = atan(-na, nb);       // a cos(phi) + b sin(phi) = 0
         if (kind == DISK_THIN) {
-            float phi = phi0 <= 1e-6 ? phi0 + PI : phi0;  // the next crossing ahead
-            for (int j = 0; j < CROSSINGS && phi < path.phi_end; ++j) {
+            // The first plane crossing inside the annulus: the first crossing
+            // angle in either window where u is in [rs/outer, rs/inner]; one
+            // evaluation of the path, no loop.
+            float first = phi0 <= 1e-6 ? phi0 + PI : phi0;  // the next crossing ahead
+            float phi = min(first_crossing_in(path, path.win_a, first),
+                            first_crossing_in(path, path.win_b, first));
+            if (phi < 1e29) {
                 float r = rs / path_u(path, phi);
+                // The windows' edges are rounded; the radius decides.
                 if (r >= P.disk.x && r <= P.disk.y) {
                     hit.outcome = OUT_DISK;
                     hit.pos = c + r * (cos(phi) * e1 + sin(phi) * e2);
@@ -237,7 +245,6 @@ Hit trace_planar(vec3 x, vec3 d) {
                     hit.g = sqrt(max(1.0 - 1.5 * rs / r, 0.0)) / (1.0 - omega * lambda);
                     return hit;
                 }
-                phi += PI;
             }
         } else if (volumetric()) {
             // The crossing behind the camera too: its slab may reach the camera.

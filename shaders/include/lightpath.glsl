@@ -66,21 +66,23 @@ float asinh_precise(float x) {
     return log(x + sqrt(x * x + 1.0));
 }
 
-// R_F for three argument triples at once (x, y, z hold the first, second
-// and third argument of each): one loop instead of three.
-vec3 carlson_rf3(vec3 x, vec3 y, vec3 z) {
+// R_F(x, y, 1) for four argument pairs at once: one loop instead of four
+// (every integral this file needs has z = 1).
+vec4 carlson_rf4(vec4 x, vec4 y) {
+    vec4 z = vec4(1.0);
     for (int i = 0; i < 16; ++i) {
-        vec3 a = (x + y + z) * (1.0 / 3.0);
-        vec3 dx = 1.0 - x / a, dy = 1.0 - y / a, dz = 1.0 - z / a;
-        vec3 dm = max(abs(dx), max(abs(dy), abs(dz)));
-        if (max(dm.x, max(dm.y, dm.z)) < 0.02) {
-            vec3 e2 = dx * dy - dz * dz;
-            vec3 e3 = dx * dy * dz;
+        vec4 a = (x + y + z) * (1.0 / 3.0);
+        vec4 dx = 1.0 - x / a, dy = 1.0 - y / a, dz = 1.0 - z / a;
+        vec4 dm = max(abs(dx), max(abs(dy), abs(dz)));
+        // Relative error below dm^6 / 4: 4e-9 at 0.05.
+        if (max(max(dm.x, dm.y), max(dm.z, dm.w)) < 0.05) {
+            vec4 e2 = dx * dy - dz * dz;
+            vec4 e3 = dx * dy * dz;
             return (1.0 - e2 * 0.1 + e3 * (1.0 / 14.0) + e2 * e2 * (1.0 / 24.0)
                     - e2 * e3 * (3.0 / 44.0)) * inversesqrt(a);
         }
-        vec3 sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
-        vec3 l = sx * (sy + sz) + sy * sz;
+        vec4 sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
+        vec4 l = sx * (sy + sz) + sy * sz;
         x = 0.25 * (x + l);
         y = 0.25 * (y + l);
         z = 0.25 * (z + l);
@@ -134,16 +136,21 @@ struct LightPath {
     float phi_end;           // angle swept to escape or capture
     bool escapes;
     Agm agm;                 // the means for sn and cn at this k
+    // Where u lies in [u_lo, u_hi] (the disk's annulus): intervals of w,
+    // (a.x, a.y) and (b.x, b.y), possibly empty or outside the path.
+    vec2 win_a, win_b;
 };
 
-// The path of a ray starting at u0 with du/dphi = du (> 0 inward).
+// The path of a ray starting at u0 with du/dphi = du (> 0 inward); u_lo <
+// u_hi bound an annulus (the thin disk's: rs / outer, rs / inner) whose
+// elliptic-argument windows the path keeps.
 //
 // Written as one straight line of code: each case only chooses the
 // arguments of the same three elliptic integrals (at the camera, at the end,
 // and K). On a CPU Vulkan driver such as lavapipe every branch of a shader
 // runs for every pixel under a mask, so three cases with their own integrals
 // would cost three times as much.
-LightPath light_path(float u0, float du) {
+LightPath light_path(float u0, float du, float u_lo, float u_hi) {
     LightPath p;
     float c = du * du + u0 * u0 * (1.0 - u0);
     float e = 4.0 / 27.0 - c;
@@ -184,52 +191,73 @@ LightPath light_path(float u0, float du) {
     p.escapes = p.kind == PATH_SCATTERED || (p.kind == PATH_PLUNGING && !inward);
     float u_end = p.escapes ? 0.0 : 1.0;
 
-    // The two incomplete integrals F = sqrt(sin2) R_F(cos2, delta2, 1), their
+    // K(k) from the arithmetic-geometric mean, which sn needs anyway.
+    p.agm = agm_of(p.mc);
+    p.kk = 1.5707963267948966 / p.agm.a[AGM_STEPS];
+
+    // Four incomplete integrals F = sqrt(sin2) R_F(cos2, delta2, 1): at the
+    // camera, at the end, and at the annulus' two edges (clamped to where
+    // the case's formula holds: u <= u2 scattered, u >= u3 trapped). Their
     // arguments per case (see src/physics/closed_form.rs):
     //   scattered: sin2 = (u - u1)/(u2 - u1), cos2 = (u2 - u)/(u2 - u1), delta2 = (u3 - u)/(u3 - u1)
     //   trapped:   sin2 = (u - u3)/(u - u2), cos2 = (u3 - u2)/(u - u2), delta2 = (u3 - u2)(u - u1)/((u3 - u1)(u - u2))
     //   plunging:  cos = (A - v)/(A + v), sin2 = 4Av/(A + v)^2, delta2 = 1 - k^2 sin2, v = u - u1
     // Differences from the root at the camera come from g0, without cancellation.
-    vec2 uu = vec2(u0, u_end);
-    vec2 a1 = uu - p.u1;
-    vec2 sin2, cos2, delta2;
+    vec4 uu = vec4(u0, u_end, u_lo, u_hi);
+    if (p.kind == PATH_SCATTERED) uu.zw = min(uu.zw, u2);
+    if (p.kind == PATH_TRAPPED) uu.zw = max(uu.zw, u3);
+    vec4 a1 = uu - p.u1;
+    vec4 sin2, cos2, delta2;
     if (p.kind == PATH_SCATTERED) {
-        vec2 a3 = u3 - uu;
+        vec4 a3 = u3 - uu;
         float u2m0 = (a1.x > 0.0 && a3.x > 0.0) ? g0 / (a1.x * a3.x) : u2 - u0;
-        vec2 u2m = vec2(max(u2m0, 0.0), u2 - u_end);
+        vec4 u2m = vec4(max(u2m0, 0.0), u2 - uu.yzw);
         sin2 = a1 / d21;
         cos2 = u2m / d21;
         delta2 = a3 / d31;
     } else if (p.kind == PATH_TRAPPED) {
         float a2 = u0 - u2;
         float um30 = max((a1.x > 0.0 && a2 > 0.0) ? g0 / (a1.x * a2) : u0 - u3, 0.0);
-        vec2 um3 = vec2(um30, u_end - u3);
-        vec2 up2 = um3 + d32;
+        vec4 um3 = vec4(um30, uu.yzw - u3);
+        vec4 up2 = um3 + d32;
         sin2 = um3 / up2;
         cos2 = d32 / up2;
         delta2 = d32 * a1 / (d31 * up2);
     } else {
-        vec2 cp = (A - a1) / (A + a1);
+        vec4 cp = (A - a1) / (A + a1);
         sin2 = 4.0 * A * a1 / ((A + a1) * (A + a1));
         cos2 = cp * cp;
         delta2 = 1.0 - m * sin2;
     }
-    vec3 f = carlson_rf3(vec3(max(cos2, 0.0), 0.0), vec3(max(delta2, 0.0), p.mc), vec3(1.0));
-    p.kk = f.z;
-    vec2 w = sqrt(max(sin2, 0.0)) * f.xy;
+    vec4 w = sqrt(max(sin2, 0.0)) * carlson_rf4(max(cos2, 0.0), max(delta2, 0.0));
     // Plunging: past phi = pi/2 (v > A), F = 2K - F(pi - phi).
     if (p.kind == PATH_PLUNGING) {
-        w = mix(w, 2.0 * p.kk - w, greaterThan(a1, vec2(A)));
+        w = mix(w, 2.0 * p.kk - w, greaterThan(a1, vec4(A)));
     }
     p.w0 = w.x;
     float w_end = w.y;
+    // u in [u_lo, u_hi]: scattered on the way in (w in [W(u_lo), W(u_hi)])
+    // and mirrored about the periapsis w = K; trapped mirrored about the
+    // turning point w = 0; plunging once.
+    p.win_a = w.zw;
+    p.win_b = p.kind == PATH_SCATTERED ? 2.0 * p.kk - w.wz
+            : p.kind == PATH_TRAPPED ? -w.wz : w.zw;
     // Scattered inward: through the periapsis (w = K) and out to 2K - w_esc.
     if (p.kind == PATH_SCATTERED && inward) w_end = 2.0 * p.kk - w_end;
     if (p.kind == PATH_TRAPPED && !inward) w_end = -w_end;
     p.rate = inward ? rate : -rate;
     p.phi_end = max((w_end - p.w0) / p.rate, 0.0);
-    p.agm = agm_of(p.mc);
     return p;
+}
+
+// The first angle phi0 + j pi (j >= 0) inside the path's w-window `win`
+// (and before phi_end), or a huge value if there is none.
+float first_crossing_in(LightPath p, vec2 win, float phi0) {
+    const float PI_ = 3.14159265358979;
+    float f1 = (win.x - p.w0) / p.rate, f2 = (win.y - p.w0) / p.rate;
+    float lo = max(min(f1, f2), 0.0), hi = min(max(f1, f2), p.phi_end);
+    float phi = phi0 + max(ceil((lo - phi0) / PI_), 0.0) * PI_;
+    return (hi >= lo && phi <= hi) ? phi : 1e30;
 }
 
 // u = rs / r at angle phi along the path: one sn/cn evaluation whatever the

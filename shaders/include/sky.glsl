@@ -68,7 +68,11 @@ vec3 sky_stars(vec3 d, float pixel_angle) {
     bool coarse = 4.0 * sigma > 0.4 * (2.0 / CELLS);
     vec2 side = coarse ? vec2(1.0) : sign(g - cell - 0.5);
     int lo = coarse ? -1 : 0;
-    vec3 sum = vec3(0.0);
+    // Flux and flux-weighted temperature of the stars that reach d; one
+    // colour-table lookup at the end instead of one per star (stars rarely
+    // overlap, and on a CPU driver every lookup in the loop is paid for
+    // every cell of every pixel).
+    float flux_sum = 0.0, temp_sum = 0.0;
     for (int j = lo; j <= 1; ++j) {
         for (int i = lo; i <= 1; ++i) {
             vec2 c = cell + vec2(i, j) * side;
@@ -79,16 +83,19 @@ vec3 sky_stars(vec3 d, float pixel_angle) {
             vec3 s = face_dir(face, suv);
             vec3 h2 = hash33(uvec3(uvec2(c) + 4099u, face + 101u));
             // Brightness: power law, a few bright stars among many faint ones.
-            float flux = 5e-8 * min(pow(h2.x, -1.5), 1000.0);
+            float is = inversesqrt(max(h2.x, 1e-12));   // h^-1.5 without pow
+            float flux = 5e-8 * min(is * is * is, 1000.0);
             float temp = mix(2800.0, 14000.0, h2.y * h2.y);
             // Chord length squared: the angle squared, for small angles.
             vec3 delta = d - s;
             float ang2 = dot(delta, delta);
             if (ang2 > reach2) continue;
             float w = exp(-0.5 * ang2 / (sigma * sigma)) / (6.2831853 * sigma * sigma);
-            sum += blackbody(temp) * (flux * w);
+            flux_sum += flux * w;
+            temp_sum += flux * w * temp;
         }
     }
+    vec3 sum = flux_sum > 0.0 ? blackbody(temp_sum / flux_sum) * flux_sum : vec3(0.0);
     // A faint galaxy band along a great circle tilted 60 degrees to the disk,
     // with a little large-scale texture.
     vec3 gal_n = normalize(vec3(0.0, 0.5, 0.866));
