@@ -24,10 +24,15 @@ layout(push_constant) uniform Push {
     float exposure;        // linear multiplier, 2^EV
     uint width;
     uint height;
-    float bloom_strength;  // 0: no bloom
-    uint tonemap;
+    float bloom_strength;
     float dither;          // amplitude in 8-bit steps (0: off)
 } pc;
+
+// Specialization constants (src/passes/composite.rs, `Variant`): what a frame
+// does not use is compiled out (a CPU driver runs every branch for every pixel).
+layout(constant_id = 0) const bool UPSCALE = false;
+layout(constant_id = 1) const uint TONEMAP = TONEMAP_ACES_HILL;
+layout(constant_id = 2) const bool BLOOM = true;
 
 vec3 aces_narkowicz(vec3 x) {
     const float a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
@@ -67,10 +72,8 @@ void main() {
     vec2 uv = (vec2(px) + 0.5) / vec2(pc.width, pc.height);
     // The ray march may run at a fraction of the output size (the window's
     // render scale): then it is upscaled here, bilinearly.
-    vec3 c = textureSize(hdr, 0) == ivec2(pc.width, pc.height)
-        ? texelFetch(hdr, px, 0).rgb
-        : textureLod(hdr, uv, 0.0).rgb;
-    if (pc.bloom_strength > 0.0) {
+    vec3 c = UPSCALE ? textureLod(hdr, uv, 0.0).rgb : texelFetch(hdr, px, 0).rgb;
+    if (BLOOM) {
         c += pc.bloom_strength * textureLod(bloom, uv, 0.0).rgb;
     }
     c *= pc.exposure;
@@ -78,8 +81,8 @@ void main() {
     imageStore(ldr, px, vec4(c, 1.0));
     return;
 #endif
-    vec3 t = pc.tonemap == TONEMAP_ACES_HILL ? aces_hill(c)
-           : pc.tonemap == TONEMAP_ACES_NARKOWICZ ? aces_narkowicz(c)
+    vec3 t = TONEMAP == TONEMAP_ACES_HILL ? aces_hill(c)
+           : TONEMAP == TONEMAP_ACES_NARKOWICZ ? aces_narkowicz(c)
            : clamp(c, 0.0, 1.0);
     vec3 s = srgb_encode(t);
     // Triangular dither of +-1 step, zero mean.

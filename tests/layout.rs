@@ -94,7 +94,6 @@ fn composite_push_constants_match_the_glsl_block() {
         offset_of!(CompositePush, width),
         offset_of!(CompositePush, height),
         offset_of!(CompositePush, bloom_strength),
-        offset_of!(CompositePush, tonemap),
         offset_of!(CompositePush, dither),
     ]
     .iter()

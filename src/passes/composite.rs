@@ -33,8 +33,28 @@ pub struct CompositePush {
     pub width: u32,
     pub height: u32,
     pub bloom_strength: f32,
-    pub tonemap: u32,
     pub dither: f32,
+}
+
+/// A specialisation of composite.comp (its constants and the HDR build): on a
+/// CPU driver every branch runs for every pixel, so the tone maps, bloom and
+/// the upscale a frame does not use are compiled out.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Variant {
+    /// Linear HDR out (`--exr-post`), no tone map.
+    pub linear: bool,
+    /// The ray march is smaller than the output: bilinear upscale (constant 0).
+    pub upscale: bool,
+    /// `glsl::TONEMAP_*` (constant 1).
+    pub tonemap: u32,
+    /// Bloom is added (constant 2).
+    pub bloom: bool,
+}
+
+impl Variant {
+    pub fn constants(&self) -> [u32; 3] {
+        [u32::from(self.upscale), self.tonemap, u32::from(self.bloom)]
+    }
 }
 
 /// Adds the composite of `hdr` (plus `bloom`, level 0, if given) at the
@@ -51,10 +71,20 @@ pub fn add_composite<'a>(
     linear: bool,
 ) -> ImageHandle {
     let (width, height) = graph.output_size();
-    let (name, format, pipeline) = if linear {
-        ("post hdr", HDR_POST_FORMAT, &pipelines.composite_hdr)
+    let (name, format) = if linear {
+        ("post hdr", HDR_POST_FORMAT)
     } else {
-        ("ldr", LDR_FORMAT, &pipelines.composite)
+        ("ldr", LDR_FORMAT)
+    };
+    let variant = Variant {
+        linear,
+        upscale: (hdr.desc.width, hdr.desc.height) != (width, height),
+        tonemap: match post.tonemap {
+            Tonemap::AcesHill => glsl::TONEMAP_ACES_HILL,
+            Tonemap::AcesNarkowicz => glsl::TONEMAP_ACES_NARKOWICZ,
+            Tonemap::Linear => glsl::TONEMAP_LINEAR,
+        },
+        bloom: bloom.is_some(),
     };
     let mut ldr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
     let (input, output, blur) = (hdr.clone(), ldr.clone(), bloom.cloned());
@@ -69,11 +99,6 @@ pub fn add_composite<'a>(
         width,
         height,
         bloom_strength,
-        tonemap: match post.tonemap {
-            Tonemap::AcesHill => glsl::TONEMAP_ACES_HILL,
-            Tonemap::AcesNarkowicz => glsl::TONEMAP_ACES_NARKOWICZ,
-            Tonemap::Linear => glsl::TONEMAP_LINEAR,
-        },
         dither: if post.dither { 1.0 } else { 0.0 },
     };
     let mut pass = graph
@@ -90,9 +115,10 @@ pub fn add_composite<'a>(
                 Some(b) => ctx.view(b, 0),
                 None => ctx.full_view(&input),
             };
+            let pipeline = pipelines.composite(variant)?;
             dispatch_2d(
                 ctx,
-                pipeline,
+                &pipeline,
                 &[
                     Descriptor::SampledImage(ctx.full_view(&input), sampler),
                     Descriptor::StorageImage(ctx.view(&output, 0)),

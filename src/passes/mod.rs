@@ -32,9 +32,9 @@ pub struct Pipelines {
     /// Ray-march pipelines by variant, built the first time a scene needs one.
     raymarch: std::sync::Mutex<std::collections::HashMap<raymarch::Variant, Arc<ComputePipeline>>>,
     gpu: Arc<Gpu>,
-    pub composite: ComputePipeline,
-    /// The composite without tone map, writing linear HDR (`--exr-post`).
-    pub composite_hdr: ComputePipeline,
+    /// Composite pipelines by variant, built on first use.
+    composite:
+        std::sync::Mutex<std::collections::HashMap<composite::Variant, Arc<ComputePipeline>>>,
     pub bloom_down: ComputePipeline,
     pub bloom_up: ComputePipeline,
     pub accumulate: ComputePipeline,
@@ -48,12 +48,7 @@ impl Pipelines {
         Ok(Pipelines {
             raymarch: std::sync::Mutex::new(std::collections::HashMap::new()),
             gpu: gpu.clone(),
-            composite: composite_pipeline(gpu, "composite", crate::shaders::COMPOSITE)?,
-            composite_hdr: composite_pipeline(
-                gpu,
-                "composite (HDR)",
-                crate::shaders::COMPOSITE_HDR,
-            )?,
+            composite: std::sync::Mutex::new(std::collections::HashMap::new()),
             bloom_down: ComputePipeline::new(
                 gpu,
                 "bloom down",
@@ -109,14 +104,39 @@ impl Pipelines {
     }
 }
 
-fn composite_pipeline(gpu: &Arc<Gpu>, name: &str, spirv: &[u8]) -> Result<ComputePipeline> {
-    let bindings = [
-        BindingKind::SampledImage,
-        BindingKind::StorageImage,
-        BindingKind::SampledImage,
-    ];
-    let push = std::mem::size_of::<composite::CompositePush>() as u32;
-    ComputePipeline::new(gpu, name, spirv, &bindings, push)
+impl Pipelines {
+    /// The composite specialised for its output, tone map, bloom and
+    /// upscaling (composite.comp's constants), built on first use and kept.
+    pub fn composite(&self, variant: composite::Variant) -> Result<Arc<ComputePipeline>> {
+        let mut cache = self
+            .composite
+            .lock()
+            .map_err(|_| crate::Error::Other("the pipeline cache lock was poisoned".into()))?;
+        if let Some(p) = cache.get(&variant) {
+            return Ok(p.clone());
+        }
+        let spirv = if variant.linear {
+            crate::shaders::COMPOSITE_HDR
+        } else {
+            crate::shaders::COMPOSITE
+        };
+        let bindings = [
+            BindingKind::SampledImage,
+            BindingKind::StorageImage,
+            BindingKind::SampledImage,
+        ];
+        let push = std::mem::size_of::<composite::CompositePush>() as u32;
+        let p = Arc::new(ComputePipeline::with_constants(
+            &self.gpu,
+            &format!("{variant:?}"),
+            spirv,
+            &bindings,
+            push,
+            &variant.constants(),
+        )?);
+        cache.insert(variant, p.clone());
+        Ok(p)
+    }
 }
 
 /// Binds `pipeline` with `descriptors`, pushes `push` (if any) and dispatches
