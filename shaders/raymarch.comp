@@ -157,32 +157,63 @@ float disk_redshift(vec3 p, vec3 x, vec3 v) {
 
 // The volumetric slab around one disk-plane crossing of a closed-form path:
 // the angles where |height| < H, from the crossing's radius and the tilt of
-// the orbit plane (widened for the path's curvature), walked as chords
-// between points of the exact path.
-void volume_crossing(LightPath path, float phi_j, float tilt, vec3 c, vec3 e1, vec3 e2,
-                     float rs, float lambda, inout Hit hit) {
+// the orbit plane (widened for the path's curvature). Four chords between
+// five points of the exact path carry VOLUME_SAMPLES samples spread evenly
+// along them, offset by the pixel's jitter: a fixed count, because on a CPU
+// driver a SIMD group runs as many samples as its longest ray would take, and
+// the jitter turns the coarser spacing into fine grain that the window's
+// accumulation and `render --spp` average away.
+const int VOLUME_SAMPLES = 12;
+
+void volume_crossing(LightPath path, float phi_j, float tilt, vec2 inside, vec3 c, vec3 e1,
+                     vec3 e2, float rs, float lambda, inout Hit hit) {
     float H = P.vol0.x;
     float r_j = rs / path_u(path, clamp(phi_j, 0.0, path.phi_end));
-    float half_width = 1.3 * asin(min(H / max(tilt * r_j, 1e-6), 1.0));
-    float a = max(phi_j - half_width, 0.0);
-    float b = min(phi_j + half_width, path.phi_end);
+    // At most half-way to the neighbouring crossings, so no angle is counted
+    // twice when the path stays in the slab from one crossing to the next.
+    float half_width = min(1.3 * asin(min(H / max(tilt * r_j, 1e-6), 1.0)), 0.5 * PI);
+    // Only where the path is inside the outer radius: the gas ends there,
+    // and samples spread over a path running off to infinity would miss it.
+    float a = max(phi_j - half_width, inside.x);
+    float b = min(phi_j + half_width, inside.y);
     if (b <= a) return;
-    const int CHORDS = 6;
-    vec3 prev = c + (rs / path_u(path, a)) * (cos(a) * e1 + sin(a) * e2);
-    for (int k = 1; k <= CHORDS; ++k) {
-        float phi = mix(a, b, float(k) / float(CHORDS));
+    vec3 pts[5];
+    for (int k = 0; k < 5; ++k) {
+        float phi = mix(a, b, 0.25 * float(k));
         float u = max(path_u(path, phi), 1e-6);
-        vec3 next = c + (rs / u) * (cos(phi) * e1 + sin(phi) * e2);
-        volume_segment(prev, next, lambda, hit.glow, hit.trans);
-        prev = next;
+        pts[k] = c + (rs / u) * (cos(phi) * e1 + sin(phi) * e2);
+    }
+    vec4 len = vec4(length(pts[1] - pts[0]), length(pts[2] - pts[1]),
+                    length(pts[3] - pts[2]), length(pts[4] - pts[3]));
+    vec4 ends = vec4(len.x, len.x + len.y, len.x + len.y + len.z, len.x + len.y + len.z + len.w);
+    float ds = ends.w / float(VOLUME_SAMPLES);
+    bool blackbody_mode = P.vol1.w > 0.5;
+    for (int s = 0; s < VOLUME_SAMPLES; ++s) {
+        float t = (float(s) + volume_jitter) * ds;
+        // Which chord holds t, and where along it (selects, not dynamic
+        // indexing: an index a masked-off lane computes must stay in range).
+        bvec3 past = greaterThanEqual(vec3(t), ends.xyz);
+        float start = past.z ? ends.z : past.y ? ends.y : past.x ? ends.x : 0.0;
+        float l = past.z ? len.w : past.y ? len.z : past.x ? len.y : len.x;
+        vec3 p0 = past.z ? pts[3] : past.y ? pts[2] : past.x ? pts[1] : pts[0];
+        vec3 p1 = past.z ? pts[4] : past.y ? pts[3] : past.x ? pts[2] : pts[1];
+        vec3 p = mix(p0, p1, clamp((t - start) / max(l, 1e-9), 0.0, 1.0));
+        float r;
+        float dens = volume_density(p, r);
+        vec3 emit;
+        if (blackbody_mode) {
+            float omega = sqrt(0.5 * rs / (r * r * r));
+            float g = sqrt(max(1.0 - 1.5 * rs / r, 1e-4)) / (1.0 - omega * lambda);
+            emit = disk_color(max(r, 1.0001 * P.disk.x), g * observer_g);
+        } else {
+            emit = volume_colormap(r);
+        }
+        hit.glow += hit.trans * emit * (dens * P.vol1.z * ds);
+        hit.trans *= exp(-dens * 0.8 * ds);
     }
 }
 
-// Disk-plane crossings looked at per ray: four turns. Rays that wind more
-// are within ~e^-8 of the critical impact parameter and stay inside
-// 1.6 rs for those turns; the crossings after them are disk images far
-// thinner than a pixel, and the whole SIMD group waits for its slowest ray.
-const int CROSSINGS = 8;
+const int VOLUME_CROSSINGS = 4;
 
 // One hole: the path lies in the plane of the hole, the camera and the ray,
 // and its shape u(phi) is known in closed form (lightpath.glsl). Disk
@@ -247,10 +278,22 @@ Hit trace_planar(vec3 x, vec3 d) {
                 }
             }
         } else if (volumetric()) {
-            // The crossing behind the camera too: its slab may reach the camera.
-            float phi = phi0 - PI;
-            for (int j = 0; j < CROSSINGS + 1 && phi - PI < path.phi_end; ++j) {
-                volume_crossing(path, phi, tilt, c, e1, e2, rs, lambda, hit);
+            // From the crossing behind the camera when the camera is in the
+            // slab (the same for every pixel, so no divergence), else from the
+            // one ahead; four in all. Later slabs are the thin rings of rays
+            // that wind, and every extra one costs the whole SIMD group.
+            bool camera_in_slab = abs(dot(x - c, N)) < 1.5 * P.vol0.x;
+            float phi = camera_in_slab ? phi0 - PI : (phi0 <= 1e-6 ? phi0 + PI : phi0);
+            // The angles where the path is inside the outer radius (u >= u_lo):
+            // scattered, between the annulus windows' outer ends; plunging,
+            // from the first window on; trapped rays never leave it.
+            vec2 w_in = path.kind == PATH_SCATTERED ? vec2(path.win_a.x, path.win_b.y)
+                      : vec2(path.win_a.x, 1e30);
+            vec2 f_in = (w_in - path.w0) / path.rate;
+            vec2 inside = path.kind == PATH_TRAPPED ? vec2(0.0, path.phi_end)
+                        : vec2(max(min(f_in.x, f_in.y), 0.0), min(max(f_in.x, f_in.y), path.phi_end));
+            for (int j = 0; j < VOLUME_CROSSINGS && phi - PI < inside.y; ++j) {
+                volume_crossing(path, phi, tilt, inside, c, e1, e2, rs, lambda, hit);
                 if (hit.trans < 0.003) {
                     hit.outcome = OUT_CAPTURED;  // opaque: nothing behind shows
                     return hit;
@@ -397,7 +440,10 @@ void main() {
         observer_g = doppler / P.observer_r.w;
     }
 
-    volume_jitter = hash33(uvec3(px, 7u)).x;
+    // The volume's sample offset: per pixel, and per accumulated frame (salted
+    // by the sub-pixel jitter, zero for a single offscreen frame) so the
+    // window's accumulation averages the grain away.
+    volume_jitter = hash33(uvec3(px, 7u + floatBitsToUint(P.cam_up.w) + 3u * floatBitsToUint(P.cam_fwd.w))).x;
     Hit hit = ONE_HOLE ? trace_planar(P.cam_pos.xyz, dir) : trace(P.cam_pos.xyz, dir);
     hit.g *= observer_g;
 #ifdef GEODESIC_AOV
