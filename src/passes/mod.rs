@@ -30,11 +30,10 @@ const RAYMARCH_BINDINGS: [BindingKind; 4] = [
 /// Pipelines and samplers the passes use, created once per renderer.
 pub struct Pipelines {
     /// Ray-march pipelines by variant, built the first time a scene needs one.
-    raymarch: std::sync::Mutex<std::collections::HashMap<raymarch::Variant, Arc<ComputePipeline>>>,
+    raymarch: VariantCache<raymarch::Variant>,
     gpu: Arc<Gpu>,
     /// Composite pipelines by variant, built on first use.
-    composite:
-        std::sync::Mutex<std::collections::HashMap<composite::Variant, Arc<ComputePipeline>>>,
+    composite: VariantCache<composite::Variant>,
     pub bloom_down: ComputePipeline,
     pub bloom_up: ComputePipeline,
     pub accumulate: ComputePipeline,
@@ -46,9 +45,9 @@ impl Pipelines {
     /// Builds every pipeline from the embedded SPIR-V.
     pub fn new(gpu: &Arc<Gpu>) -> Result<Self> {
         Ok(Pipelines {
-            raymarch: std::sync::Mutex::new(std::collections::HashMap::new()),
+            raymarch: VariantCache::new(),
             gpu: gpu.clone(),
-            composite: std::sync::Mutex::new(std::collections::HashMap::new()),
+            composite: VariantCache::new(),
             bloom_down: ComputePipeline::new(
                 gpu,
                 "bloom down",
@@ -76,6 +75,32 @@ impl Pipelines {
     }
 }
 
+/// Pipelines of one shader by specialisation, built on first use and kept.
+struct VariantCache<K>(std::sync::Mutex<std::collections::HashMap<K, Arc<ComputePipeline>>>);
+
+impl<K: std::hash::Hash + Eq + Copy> VariantCache<K> {
+    fn new() -> Self {
+        VariantCache(std::sync::Mutex::new(std::collections::HashMap::new()))
+    }
+
+    fn get(
+        &self,
+        key: K,
+        build: impl FnOnce() -> Result<ComputePipeline>,
+    ) -> Result<Arc<ComputePipeline>> {
+        let mut cache = self
+            .0
+            .lock()
+            .map_err(|_| crate::Error::Other("the pipeline cache lock was poisoned".into()))?;
+        if let Some(p) = cache.get(&key) {
+            return Ok(p.clone());
+        }
+        let p = Arc::new(build()?);
+        cache.insert(key, p.clone());
+        Ok(p)
+    }
+}
+
 impl Pipelines {
     /// The ray march specialised for a scene's variant (the specialization
     /// constants of raymarch.comp), built on first use and kept. Code a scene
@@ -83,59 +108,42 @@ impl Pipelines {
     /// lavapipe every branch runs under a mask for every pixel, so a branch
     /// not taken costs as much as one taken.
     pub fn raymarch(&self, variant: raymarch::Variant) -> Result<Arc<ComputePipeline>> {
-        let mut cache = self
-            .raymarch
-            .lock()
-            .map_err(|_| crate::Error::Other("the pipeline cache lock was poisoned".into()))?;
-        if let Some(p) = cache.get(&variant) {
-            return Ok(p.clone());
-        }
-        let spirv = if variant.aov { RAYMARCH_AOV } else { RAYMARCH };
-        let p = Arc::new(ComputePipeline::with_constants(
-            &self.gpu,
-            &variant.name(),
-            spirv,
-            &RAYMARCH_BINDINGS,
-            0,
-            &variant.constants(),
-        )?);
-        cache.insert(variant, p.clone());
-        Ok(p)
+        self.raymarch.get(variant, || {
+            let spirv = if variant.aov { RAYMARCH_AOV } else { RAYMARCH };
+            ComputePipeline::with_constants(
+                &self.gpu,
+                &variant.name(),
+                spirv,
+                &RAYMARCH_BINDINGS,
+                0,
+                &variant.constants(),
+            )
+        })
     }
-}
 
-impl Pipelines {
     /// The composite specialised for its output, tone map, bloom and
     /// upscaling (composite.comp's constants), built on first use and kept.
     pub fn composite(&self, variant: composite::Variant) -> Result<Arc<ComputePipeline>> {
-        let mut cache = self
-            .composite
-            .lock()
-            .map_err(|_| crate::Error::Other("the pipeline cache lock was poisoned".into()))?;
-        if let Some(p) = cache.get(&variant) {
-            return Ok(p.clone());
-        }
-        let spirv = if variant.linear {
-            crate::shaders::COMPOSITE_HDR
-        } else {
-            crate::shaders::COMPOSITE
-        };
-        let bindings = [
-            BindingKind::SampledImage,
-            BindingKind::StorageImage,
-            BindingKind::SampledImage,
-        ];
-        let push = std::mem::size_of::<composite::CompositePush>() as u32;
-        let p = Arc::new(ComputePipeline::with_constants(
-            &self.gpu,
-            &format!("{variant:?}"),
-            spirv,
-            &bindings,
-            push,
-            &variant.constants(),
-        )?);
-        cache.insert(variant, p.clone());
-        Ok(p)
+        self.composite.get(variant, || {
+            let spirv = if variant.linear {
+                crate::shaders::COMPOSITE_HDR
+            } else {
+                crate::shaders::COMPOSITE
+            };
+            let bindings = [
+                BindingKind::SampledImage,
+                BindingKind::StorageImage,
+                BindingKind::SampledImage,
+            ];
+            ComputePipeline::with_constants(
+                &self.gpu,
+                &format!("{variant:?}"),
+                spirv,
+                &bindings,
+                std::mem::size_of::<composite::CompositePush>() as u32,
+                &variant.constants(),
+            )
+        })
     }
 }
 

@@ -158,7 +158,7 @@ impl LightPath {
             let k_complete = ellip_k(m_complement);
             let rate = 0.5 * d31.sqrt();
             let g0 = du * du; // = (u0 - u1)(u0 - u2)(u0 - u3)
-            if u0 < 2.0 / 3.0 {
+            let (kind, w0, rate, phi_end, escapes) = if u0 < 2.0 / 3.0 {
                 // W(u) = F(asin √((u - u1)/(u2 - u1)), k).
                 let w_of = |u: f64, u2_minus_u: f64| {
                     incomplete_f((u - u1) / d21, u2_minus_u / d21, (u3 - u) / d31)
@@ -175,19 +175,7 @@ impl LightPath {
                 } else {
                     ((w0 - w_esc) / rate, -rate)
                 };
-                LightPath {
-                    kind: Kind::Scattered,
-                    u1,
-                    d21,
-                    d32,
-                    u3,
-                    m_complement,
-                    k_complete,
-                    w0,
-                    rate,
-                    phi_end: phi_end.max(0.0),
-                    escapes: true,
-                }
+                (Kind::Scattered, w0, rate, phi_end, true)
             } else {
                 // W3(u) = F(asin √((u - u3)/(u - u2)), k).
                 let w_of = |u: f64, u_minus_u3: f64| {
@@ -206,19 +194,20 @@ impl LightPath {
                 } else {
                     ((w_h + w0) / rate, -rate)
                 };
-                LightPath {
-                    kind: Kind::Trapped,
-                    u1,
-                    d21,
-                    d32,
-                    u3,
-                    m_complement,
-                    k_complete,
-                    w0,
-                    rate,
-                    phi_end: phi_end.max(0.0),
-                    escapes: false,
-                }
+                (Kind::Trapped, w0, rate, phi_end, false)
+            };
+            LightPath {
+                kind,
+                u1,
+                d21,
+                d32,
+                u3,
+                m_complement,
+                k_complete,
+                w0,
+                rate,
+                phi_end: phi_end.max(0.0),
+                escapes,
             }
         } else {
             // One real root: u1 = 1/3 - 2/3 cosh(α/3), α = acosh(27c/2 - 1)
