@@ -76,7 +76,7 @@ pub struct PassTiming {
 /// CPU time of each phase of one frame, milliseconds: building the graph
 /// (and writing the parameters), compiling it, recording the command buffer,
 /// submitting, waiting for the fence, and decoding the readback.
-#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct CpuPhases {
     pub build_ms: f64,
     pub compile_ms: f64,

@@ -168,6 +168,16 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
     ] {
         assert_eq!(define(composite, name), f64::from(rust), "{name}");
     }
+    // Observer kinds: the Rust enum's discriminants are what the host writes.
+    use blackhole::physics::observer::ObserverKind;
+    for (name, kind) in [
+        ("OBS_STATIC", ObserverKind::Static),
+        ("OBS_ORBITING", ObserverKind::Orbiting),
+        ("OBS_FALLING", ObserverKind::Falling),
+        ("OBS_FLAT", ObserverKind::Flat),
+    ] {
+        assert_eq!(define(params, name), f64::from(kind as u32), "{name}");
+    }
     // The AOV's outcome codes are binding (the geodesic AOV table in the README).
     let raymarch = include_str!("../shaders/raymarch.comp");
     for (name, code) in [
@@ -177,5 +187,40 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
         ("OUT_NO_STEPS", 3.0),
     ] {
         assert_eq!(define(raymarch, name), code, "{name}");
+    }
+}
+
+/// `layout(constant_id = N) const TYPE NAME` lines of a GLSL source, as
+/// (N, NAME).
+fn specialization_constants(src: &str) -> Vec<(u32, String)> {
+    src.lines()
+        .filter_map(|l| l.trim().strip_prefix("layout(constant_id = "))
+        .filter_map(|rest| {
+            let (id, decl) = rest.split_once(')')?;
+            let name = decl.split_whitespace().nth(2)?;
+            Some((id.trim().parse().ok()?, name.to_string()))
+        })
+        .collect()
+}
+
+#[test]
+fn specialization_constants_match_the_glsl_ids() {
+    for (src, names) in [
+        (
+            include_str!("../shaders/raymarch.comp"),
+            &blackhole::passes::raymarch::Variant::CONSTANT_NAMES[..],
+        ),
+        (
+            include_str!("../shaders/composite.comp"),
+            &blackhole::passes::composite::Variant::CONSTANT_NAMES[..],
+        ),
+    ] {
+        let glsl = specialization_constants(src);
+        let rust: Vec<(u32, String)> = names
+            .iter()
+            .enumerate()
+            .map(|(i, n)| (i as u32, (*n).to_string()))
+            .collect();
+        assert_eq!(glsl, rust);
     }
 }

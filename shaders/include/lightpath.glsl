@@ -127,10 +127,6 @@ vec2 jacobi_sn_cn_from(float w, Agm g, const int n) {
     return vec2(sin(phi), cos(phi));
 }
 
-vec2 jacobi_sn_cn(float w, Agm g) {
-    return jacobi_sn_cn_from(w, g, AGM_STEPS);
-}
-
 #define PATH_SCATTERED 0
 #define PATH_TRAPPED 1
 #define PATH_PLUNGING 2

@@ -34,17 +34,17 @@ layout(std430, binding = 1) readonly buffer RaymarchParams {
     vec4 cam_right;    // xyz: right;           w: aspect (W / H)
     vec4 cam_up;       // xyz: camera up;       w: sub-pixel jitter x (pixels, 0 = centre)
     vec4 cam_fwd;      // xyz: forward;         w: sub-pixel jitter y (pixels, down)
-    vec4 disk_normal;  // xyz: unit normal;     w: disk kind
+    vec4 disk_normal;  // xyz: unit normal;     w: disk kind (the ray march compiles its own in: DISK_KIND)
     vec4 disk;         // x: inner radius, y: outer radius, z: brightness
     vec4 disk_e1;      // xyz: in-plane basis vector (azimuth 0)
     vec4 disk_e2;      // xyz: e1 x normal (azimuth 90 degrees)
     vec4 disk_temp;    // x: peak temperature (K), y: NT profile at the peak, z: Doppler on, w: redshift on
     vec4 vol0;         // volumetric disk: x: half height, y: vertical falloff, z: radial falloff, w: noise scale
-    vec4 plane_pos;    // grid plane: xyz: a point on it, w: 1 on / 0 off
+    vec4 plane_pos;    // grid plane: xyz: a point on it, w: 1 on / 0 off (compiled in: GRID_PLANE)
     vec4 plane_n;      // xyz: unit normal facing the camera, w: line spacing
     vec4 plane_u;      // xyz: in-plane axis, w: half size
     vec4 vol1;         // x: noise octaves, y: rotation time (speed x time), z: lit (emission scale), w: 1 blackbody / 0 colour map
-    vec4 sky;          // x: sky kind, y: checker squares or star density, z: brightness, w: galaxy band
+    vec4 sky;          // x: sky kind (compiled in: SKY_KIND), y: checker squares or star density, z: brightness, w: galaxy band
     vec4 integ;        // x: tolerance, y: escape radius, z: gravity on (1/0), w: unused
     vec4 observer;     // xyz: the camera's velocity in the static frame (world axes); w: observer kind
     vec4 observer_r;   // xyz: unit vector from the reference hole to the camera; w: sqrt(1 - rs/r) (1: flat)

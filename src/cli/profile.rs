@@ -96,17 +96,6 @@ pub struct Report {
     pub cpu: Vec<PassReport>,
 }
 
-/// Renders one warm-up frame and then `frames` timed frames.
-pub fn run(
-    r: &mut Renderer,
-    scene: &Scene,
-    width: u32,
-    height: u32,
-    frames: u32,
-) -> Result<Report> {
-    run_frames(r, scene, width, height, 1, frames).map(|(report, _)| report)
-}
-
 /// Renders `warmup` untimed frames (pipeline builds, allocation) and then
 /// `frames` timed ones; the report and each timed frame's timings.
 pub fn run_frames(

@@ -52,6 +52,10 @@ pub struct Variant {
 }
 
 impl Variant {
+    /// The GLSL names of [`Variant::constants`], in `constant_id` order
+    /// (tests/layout.rs checks them against composite.comp).
+    pub const CONSTANT_NAMES: [&'static str; 3] = ["UPSCALE", "TONEMAP", "BLOOM"];
+
     pub fn constants(&self) -> [u32; 3] {
         [u32::from(self.upscale), self.tonemap, u32::from(self.bloom)]
     }

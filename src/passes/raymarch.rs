@@ -234,6 +234,11 @@ impl Variant {
         }
     }
 
+    /// The GLSL names of [`Variant::constants`], in `constant_id` order
+    /// (tests/layout.rs checks them against raymarch.comp).
+    pub const CONSTANT_NAMES: [&'static str; 4] =
+        ["ONE_HOLE", "DISK_KIND", "SKY_KIND", "GRID_PLANE"];
+
     pub fn constants(&self) -> [u32; 4] {
         [
             u32::from(self.one_hole),
