@@ -6,7 +6,10 @@ pub const RAYMARCH: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/raymarch.c
 pub const COMPOSITE: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/composite.comp.spv"));
 /// The ray march writing the geodesic AOV (`raymarch.comp` with `GEODESIC_AOV`).
 pub const RAYMARCH_AOV: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/raymarch_aov.comp.spv"));
-/// Bloom downsample and bright pass (`shaders/bloom_down.comp`).
+/// Bloom bright pass to a quarter of the size (`shaders/bloom_prefilter.comp`).
+pub const BLOOM_PREFILTER: &[u8] =
+    include_bytes!(concat!(env!("OUT_DIR"), "/bloom_prefilter.comp.spv"));
+/// Bloom downsample (`shaders/bloom_down.comp`).
 pub const BLOOM_DOWN: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/bloom_down.comp.spv"));
 /// Bloom upsample (`shaders/bloom_up.comp`).
 pub const BLOOM_UP: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/bloom_up.comp.spv"));

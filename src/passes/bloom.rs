@@ -1,8 +1,15 @@
-//! Bloom: a bright pass and a downsample chain into the mip levels of one
-//! half-resolution image, then an upsample chain that adds each level into the
-//! next larger one (Jimenez, "Next Generation Post Processing in Call of Duty:
-//! Advanced Warfare", SIGGRAPH 2014: 13-tap downsample with a Karis average on
-//! the first level, 3x3 tent upsample).
+//! Bloom: a tent-filtered bright pass into a quarter-resolution image, a
+//! downsample chain into its mip levels, then an upsample chain that adds each
+//! level into the next larger one (Jimenez, "Next Generation Post Processing
+//! in Call of Duty: Advanced Warfare", SIGGRAPH 2014: 13-tap downsample, tent
+//! upsample).
+//!
+//! Quarter, not half, resolution for the first level: the prefilter reads
+//! every full-resolution texel once (sixteen bilinear taps per output pixel,
+//! against thirteen per pixel of a four times larger half-resolution level),
+//! and the half-resolution level's own detail, a glow one or two pixels wide,
+//! is finer than a glow needs. At 1280x720 on lavapipe this took bloom from
+//! 11 ms to about 3.
 //!
 //! One graph pass per level, so each level gets its own barriers (only the
 //! two mips it touches) and its own timestamp.
@@ -18,15 +25,22 @@ use crate::vk::{Access, Descriptor};
 /// Format of the bloom chain.
 pub const BLOOM_FORMAT: vk::Format = vk::Format::R16G16B16A16_SFLOAT;
 
+/// Push constants of `shaders/bloom_prefilter.comp`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct BloomPrefilterPush {
+    pub src_texel: [f32; 2],
+    pub dst_size: [u32; 2],
+    pub threshold: f32,
+    pub knee: f32,
+}
+
 /// Push constants of `shaders/bloom_down.comp`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]
 pub struct BloomDownPush {
     pub src_texel: [f32; 2],
     pub dst_size: [u32; 2],
-    pub threshold: f32,
-    pub knee: f32,
-    pub first: u32,
 }
 
 /// Push constants of `shaders/bloom_up.comp`.
@@ -49,11 +63,12 @@ pub fn add_bloom<'a>(
     if settings.strength <= 0.0 {
         return None;
     }
-    // Half the size of the HDR input (which the window may render scaled).
+    // A quarter of the size of the HDR input (which the window may render
+    // scaled).
     let desc = crate::vk::ImageDesc::new_2d(
         BLOOM_FORMAT,
-        (hdr.desc.width / 2).max(1),
-        (hdr.desc.height / 2).max(1),
+        (hdr.desc.width / 4).max(1),
+        (hdr.desc.height / 4).max(1),
     )
     .with_mips(settings.levels);
     let mut chain = graph.create_image("bloom", desc);
@@ -75,16 +90,15 @@ pub fn add_bloom<'a>(
             .read(hdr, Access::ComputeSampledRead, Mips::ALL)
             .write(&mut chain, Access::ComputeStorageWrite, Mips::one(0))
             .record(move |ctx| {
-                let push = BloomDownPush {
+                let push = BloomPrefilterPush {
                     src_texel: texel,
                     dst_size: [w, h],
                     threshold,
                     knee,
-                    first: 1,
                 };
                 dispatch_2d(
                     ctx,
-                    &pipelines.bloom_down,
+                    &pipelines.bloom_prefilter,
                     &[
                         Descriptor::SampledImage(ctx.full_view(&src), sampler),
                         Descriptor::StorageImage(ctx.view(&dst, 0)),
@@ -110,9 +124,6 @@ pub fn add_bloom<'a>(
                 let push = BloomDownPush {
                     src_texel: [1.0 / sw as f32, 1.0 / sh as f32],
                     dst_size: [w, h],
-                    threshold: 0.0,
-                    knee: 0.0,
-                    first: 0,
                 };
                 dispatch_2d(
                     ctx,

@@ -34,6 +34,7 @@ pub struct Pipelines {
     gpu: Arc<Gpu>,
     /// Composite pipelines by variant, built on first use.
     composite: VariantCache<composite::Variant>,
+    pub bloom_prefilter: ComputePipeline,
     pub bloom_down: ComputePipeline,
     pub bloom_up: ComputePipeline,
     pub accumulate: ComputePipeline,
@@ -48,6 +49,13 @@ impl Pipelines {
             raymarch: VariantCache::new(),
             gpu: gpu.clone(),
             composite: VariantCache::new(),
+            bloom_prefilter: ComputePipeline::new(
+                gpu,
+                "bloom prefilter",
+                crate::shaders::BLOOM_PREFILTER,
+                &[BindingKind::SampledImage, BindingKind::StorageImage],
+                std::mem::size_of::<bloom::BloomPrefilterPush>() as u32,
+            )?,
             bloom_down: ComputePipeline::new(
                 gpu,
                 "bloom down",

@@ -343,7 +343,8 @@ pub struct Bloom {
     pub threshold: f64,
     /// Width of the soft knee around the threshold.
     pub knee: f64,
-    /// Mip levels of the chain, 1 to 8 (each halves the size).
+    /// Mip levels of the chain, 1 to 8: the first a quarter of the image
+    /// size, each next one half the one before.
     pub levels: u32,
     /// Tent radius of the upsample, in texels of the smaller level.
     pub radius: f64,
