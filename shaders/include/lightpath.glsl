@@ -119,9 +119,19 @@ Agm agm_of(float mc) {
 // The descent from step n (n <= AGM_STEPS): fewer steps are exact while
 // c_n is below f32 resolution (k^2 up to 0.9 by the fourth step) and
 // otherwise leave an error of about c_n / (a_n 2^n) rad in the amplitude.
+//
+// Steps whose c_i / a_i is below 1e-7 only halve the amplitude (their asin
+// term is below f32 resolution): the descent starts below them, so rays away
+// from the critical impact parameter, where k is small and c_n falls fast,
+// take three or four steps instead of seven (a loop runs as long as the
+// slowest ray of its SIMD group; a skipped branch would not save).
 vec2 jacobi_sn_cn_from(float w, Agm g, const int n) {
-    float phi = exp2(float(n)) * g.a[n] * w;
-    for (int i = n; i >= 1; --i) {
+    int top = 0;
+    for (int i = 1; i <= n; ++i) {
+        if (g.c[i] > 1e-7 * g.a[i]) top = i;
+    }
+    float phi = exp2(float(top)) * g.a[n] * w;
+    for (int i = top; i >= 1; --i) {
         phi = 0.5 * (phi + asin_precise(clamp(g.c[i] * sin(phi) / g.a[i], -1.0, 1.0)));
     }
     return vec2(sin(phi), cos(phi));
