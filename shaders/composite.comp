@@ -1,11 +1,14 @@
 #version 460
-// Composite: bloom added to the HDR image, exposure in EV stops, a filmic tone
-// map, sRGB encoding and a small triangular dither so 8-bit gradients do not
+// Composite: bloom added to the HDR image, exposure in EV stops (times the
+// metered exposure of exposure.comp when automatic), a filmic tone map,
+// sRGB encoding and a small triangular dither so 8-bit gradients do not
 // band. Tone maps: Narkowicz's one-line fit of the ACES RRT+ODT ("ACES Filmic
 // Tone Mapping Curve", 2016) and Stephen Hill's fuller fit (the
 // "BakingLab" RRT+ODT fit with the sRGB-to-ACES input and output matrices).
 
 layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "color.glsl"
 
 layout(binding = 0) uniform sampler2D hdr;
 #ifdef HDR_OUTPUT
@@ -15,10 +18,12 @@ layout(binding = 1, rgba16f) uniform writeonly image2D ldr;
 layout(binding = 1, rgba8) uniform writeonly image2D ldr;
 #endif
 layout(binding = 2) uniform sampler2D bloom;   // level 0 of the bloom chain
+layout(binding = 3) uniform sampler2D metered; // 1x1: the automatic exposure
 
 #define TONEMAP_ACES_HILL 0
 #define TONEMAP_ACES_NARKOWICZ 1
 #define TONEMAP_LINEAR 2
+#define TONEMAP_HUE_PRESERVING 3
 
 layout(push_constant) uniform Push {
     float exposure;        // linear multiplier, 2^EV
@@ -26,6 +31,7 @@ layout(push_constant) uniform Push {
     uint height;
     float bloom_strength;
     float dither;          // amplitude in 8-bit steps (0: off)
+    float saturation;      // 1: as rendered
 } pc;
 
 // Specialization constants (src/passes/composite.rs, `Variant`): what a frame
@@ -33,6 +39,7 @@ layout(push_constant) uniform Push {
 layout(constant_id = 0) const bool UPSCALE = false;
 layout(constant_id = 1) const uint TONEMAP = TONEMAP_ACES_HILL;
 layout(constant_id = 2) const bool BLOOM = true;
+layout(constant_id = 3) const bool AUTO_EXPOSURE = false;
 
 vec3 aces_narkowicz(vec3 x) {
     const float a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
@@ -57,6 +64,21 @@ vec3 aces_hill(vec3 color) {
 // and c (three square roots instead of a pow, which a CPU driver builds from
 // log2 and exp2): off by at most 0.012 of an 8-bit step over [0.0031308, 1],
 // far below the dither.
+// Hill's RRT+ODT rational curve on one value, scaled so it tends to 1.
+float rrt_odt(float v) {
+    float a = v * (v + 0.0245786) - 0.000090537;
+    float b = v * (0.983729 * v + 0.4329510) + 0.238081;
+    return max(0.983729 * a / b, 0.0);
+}
+
+// The tone curve on the brightest channel, the pixel scaled by it: hue and
+// saturation are kept (a blue-white or orange-red blackbody stays so however
+// bright) and no channel clips.
+vec3 hue_preserving(vec3 c) {
+    float m = max(max(c.r, c.g), c.b);
+    return m > 1e-12 ? c * (rrt_odt(m) / m) : vec3(0.0);
+}
+
 vec3 srgb_encode(vec3 c) {
     vec3 lo = c * 12.92;
     vec3 s1 = sqrt(c), s2 = sqrt(s1), s3 = sqrt(s2);
@@ -82,12 +104,15 @@ void main() {
     if (BLOOM) {
         c += pc.bloom_strength * textureLod(bloom, uv, 0.0).rgb;
     }
-    c *= pc.exposure;
+    c *= AUTO_EXPOSURE ? pc.exposure * texelFetch(metered, ivec2(0), 0).r : pc.exposure;
+    float l = luminance(c);
+    c = max(l + pc.saturation * (c - l), 0.0);
 #ifdef HDR_OUTPUT
     imageStore(ldr, px, vec4(c, 1.0));
     return;
 #endif
-    vec3 t = TONEMAP == TONEMAP_ACES_HILL ? aces_hill(c)
+    vec3 t = TONEMAP == TONEMAP_HUE_PRESERVING ? hue_preserving(c)
+           : TONEMAP == TONEMAP_ACES_HILL ? aces_hill(c)
            : TONEMAP == TONEMAP_ACES_NARKOWICZ ? aces_narkowicz(c)
            : clamp(c, 0.0, 1.0);
     vec3 s = srgb_encode(t);

@@ -49,7 +49,8 @@ layout(binding = 3) uniform sampler2D sky_tex;
 // (the conventions in the README, "Physics"): Novikov-Thorne temperature T(r), observed temperature
 // g T coloured by the blackbody table, observed bolometric intensity g^4 times
 // the emitted T^4. The switches pick which parts of g apply: the gravitational
-// part sqrt(1 - rs/r), the kinematic (Doppler) rest, both, or neither.
+// part sqrt(1 - rs/r) (colour and brightness), the kinematic rest to the
+// colour (Doppler) and to the brightness (beaming).
 vec3 disk_color(float r, float g_full) {
     float rs = P.holes[0].w;
     float r_in = P.disk.x;
@@ -58,11 +59,13 @@ vec3 disk_color(float r, float g_full) {
     // The gravitational part as this observer measures it: emitter's clock
     // against the camera's.
     float g_grav = sqrt(max(1.0 - rs / r, 1e-6)) / P.observer_r.w;
-    bool doppler = P.disk_temp.z > 0.5, redshift = P.disk_temp.w > 0.5;
-    float g = doppler ? (redshift ? g_full : g_full / g_grav) : (redshift ? g_grav : 1.0);
-    float t_obs = g * t_rel * P.disk_temp.x;
-    vec3 c = blackbody(t_obs);
-    float gt = g * t_rel;
+    bool doppler = P.disk_temp.z > 0.5, redshift = P.disk_temp.w > 0.5, beaming = P.disk.w > 0.5;
+    float g_kin = g_full / g_grav;
+    float g_base = redshift ? g_grav : 1.0;
+    float g = doppler ? g_base * g_kin : g_base;          // colour
+    float g_i = beaming ? g_base * g_kin : g_base;        // brightness
+    vec3 c = blackbody(g * t_rel * P.disk_temp.x);
+    float gt = g_i * t_rel;
     return c * (P.disk.z * gt * gt * gt * gt);
 }
 

@@ -18,3 +18,5 @@ pub const COMPOSITE_HDR: &[u8] =
     include_bytes!(concat!(env!("OUT_DIR"), "/composite_hdr.comp.spv"));
 /// Progressive accumulation of jittered frames (`shaders/accumulate.comp`).
 pub const ACCUMULATE: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/accumulate.comp.spv"));
+/// Automatic exposure metering (`shaders/exposure.comp`).
+pub const EXPOSURE: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/exposure.comp.spv"));

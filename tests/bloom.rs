@@ -38,6 +38,7 @@ fn every_level_is_its_own_timed_pass() {
             "bloom up 2",
             "bloom up 1",
             "bloom up 0",
+            "exposure",
             "composite",
             "readback"
         ]
@@ -95,8 +96,10 @@ fn a_bright_spot_spreads_symmetrically_and_falls_off() {
     }
     let post = Post {
         exposure_ev: 0.0,
+        auto_exposure: false,
         tonemap: Tonemap::Linear,
         dither: false,
+        ..Post::default()
     };
     let bloom = Bloom {
         strength: 1.0,

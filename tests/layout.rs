@@ -95,6 +95,7 @@ fn composite_push_constants_match_the_glsl_block() {
         offset_of!(CompositePush, height),
         offset_of!(CompositePush, bloom_strength),
         offset_of!(CompositePush, dither),
+        offset_of!(CompositePush, saturation),
     ]
     .iter()
     .map(|&o| o as u32)
@@ -165,6 +166,7 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
         ("TONEMAP_ACES_HILL", c::TONEMAP_ACES_HILL),
         ("TONEMAP_ACES_NARKOWICZ", c::TONEMAP_ACES_NARKOWICZ),
         ("TONEMAP_LINEAR", c::TONEMAP_LINEAR),
+        ("TONEMAP_HUE_PRESERVING", c::TONEMAP_HUE_PRESERVING),
     ] {
         assert_eq!(define(composite, name), f64::from(rust), "{name}");
     }

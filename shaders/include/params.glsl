@@ -35,7 +35,7 @@ layout(std430, binding = 1) readonly buffer RaymarchParams {
     vec4 cam_up;       // xyz: camera up;       w: sub-pixel jitter x (pixels, 0 = centre)
     vec4 cam_fwd;      // xyz: forward;         w: sub-pixel jitter y (pixels, down)
     vec4 disk_normal;  // xyz: unit normal;     w: disk kind (the ray march compiles its own in: DISK_KIND)
-    vec4 disk;         // x: inner radius, y: outer radius, z: brightness
+    vec4 disk;         // x: inner radius, y: outer radius, z: brightness, w: Doppler beaming on
     vec4 disk_e1;      // xyz: in-plane basis vector (azimuth 0)
     vec4 disk_e2;      // xyz: e1 x normal (azimuth 90 degrees)
     vec4 disk_temp;    // x: peak temperature (K), y: NT profile at the peak, z: Doppler on, w: redshift on

@@ -419,6 +419,7 @@ fn scene_editor(ui: &mut Ui, s: &mut Scene) {
     egui::CollapsingHeader::new("physics").show(ui, |ui| {
         ui.checkbox(&mut s.physics.gravity, "gravity");
         ui.checkbox(&mut s.physics.doppler, "doppler");
+        ui.checkbox(&mut s.physics.beaming, "beaming");
         ui.checkbox(
             &mut s.physics.gravitational_redshift,
             "gravitational_redshift",
@@ -465,12 +466,15 @@ fn scene_editor(ui: &mut Ui, s: &mut Scene) {
         num(ui, "radius", &mut b.radius, 0.01);
     });
     egui::CollapsingHeader::new("post").show(ui, |ui| {
+        ui.checkbox(&mut s.post.auto_exposure, "auto_exposure");
         num(ui, "exposure_ev", &mut s.post.exposure_ev, 0.05);
+        num(ui, "saturation", &mut s.post.saturation, 0.01);
         choice(
             ui,
             "tonemap",
             &mut s.post.tonemap,
             &[
+                (Tonemap::HuePreserving, "hue-preserving"),
                 (Tonemap::AcesHill, "aces-hill"),
                 (Tonemap::AcesNarkowicz, "aces-narkowicz"),
                 (Tonemap::Linear, "linear"),

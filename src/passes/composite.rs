@@ -23,6 +23,7 @@ pub mod glsl {
     pub const TONEMAP_ACES_HILL: u32 = 0;
     pub const TONEMAP_ACES_NARKOWICZ: u32 = 1;
     pub const TONEMAP_LINEAR: u32 = 2;
+    pub const TONEMAP_HUE_PRESERVING: u32 = 3;
 }
 
 /// Push constants of `shaders/composite.comp`.
@@ -34,6 +35,7 @@ pub struct CompositePush {
     pub height: u32,
     pub bloom_strength: f32,
     pub dither: f32,
+    pub saturation: f32,
 }
 
 /// A specialisation of composite.comp (its constants and the HDR build): on a
@@ -49,16 +51,31 @@ pub struct Variant {
     pub tonemap: u32,
     /// Bloom is added (constant 2).
     pub bloom: bool,
+    /// The metered exposure multiplies (constant 3).
+    pub auto_exposure: bool,
 }
 
 impl Variant {
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against composite.comp).
-    pub const CONSTANT_NAMES: [&'static str; 3] = ["UPSCALE", "TONEMAP", "BLOOM"];
+    pub const CONSTANT_NAMES: [&'static str; 4] = ["UPSCALE", "TONEMAP", "BLOOM", "AUTO_EXPOSURE"];
 
-    pub fn constants(&self) -> [u32; 3] {
-        [u32::from(self.upscale), self.tonemap, u32::from(self.bloom)]
+    pub fn constants(&self) -> [u32; 4] {
+        [
+            u32::from(self.upscale),
+            self.tonemap,
+            u32::from(self.bloom),
+            u32::from(self.auto_exposure),
+        ]
     }
+}
+
+/// The composite's inputs besides the HDR image.
+pub struct CompositeInputs<'h> {
+    /// Level 0 of the bloom chain, if bloom is on.
+    pub bloom: Option<&'h ImageHandle>,
+    /// The 1x1 metered exposure, if automatic.
+    pub exposure: Option<&'h ImageHandle>,
 }
 
 /// Adds the composite of `hdr` (plus `bloom`, level 0, if given) at the
@@ -69,12 +86,13 @@ pub fn add_composite<'a>(
     graph: &mut Graph<'a>,
     pipelines: &'a Pipelines,
     hdr: &ImageHandle,
-    bloom: Option<&ImageHandle>,
+    inputs: CompositeInputs<'_>,
     bloom_settings: &Bloom,
     post: &Post,
     linear: bool,
 ) -> ImageHandle {
     let (width, height) = graph.output_size();
+    let CompositeInputs { bloom, exposure } = inputs;
     let (name, format) = if linear {
         ("post hdr", HDR_POST_FORMAT)
     } else {
@@ -87,11 +105,14 @@ pub fn add_composite<'a>(
             Tonemap::AcesHill => glsl::TONEMAP_ACES_HILL,
             Tonemap::AcesNarkowicz => glsl::TONEMAP_ACES_NARKOWICZ,
             Tonemap::Linear => glsl::TONEMAP_LINEAR,
+            Tonemap::HuePreserving => glsl::TONEMAP_HUE_PRESERVING,
         },
         bloom: bloom.is_some(),
+        auto_exposure: exposure.is_some(),
     };
     let mut ldr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
-    let (input, output, blur) = (hdr.clone(), ldr.clone(), bloom.cloned());
+    let (input, output, blur, metered) =
+        (hdr.clone(), ldr.clone(), bloom.cloned(), exposure.cloned());
     // The up chain sums every level into level 0: divide by their count so
     // `strength` means the same for any number of levels.
     let bloom_strength = match bloom {
@@ -104,6 +125,7 @@ pub fn add_composite<'a>(
         height,
         bloom_strength,
         dither: if post.dither { 1.0 } else { 0.0 },
+        saturation: post.saturation as f32,
     };
     let mut pass = graph
         .add_pass("composite")
@@ -111,12 +133,19 @@ pub fn add_composite<'a>(
     if let Some(b) = bloom {
         pass = pass.read(b, Access::ComputeSampledRead, Mips::one(0));
     }
+    if let Some(e) = exposure {
+        pass = pass.read(e, Access::ComputeSampledRead, Mips::ALL);
+    }
     pass.write(&mut ldr, Access::ComputeStorageWrite, Mips::ALL)
         .record(move |ctx| {
             let sampler = pipelines.linear_clamp.sampler;
             // Without bloom the binding still needs an image; the shader skips it.
             let bloom_view = match &blur {
                 Some(b) => ctx.view(b, 0),
+                None => ctx.full_view(&input),
+            };
+            let metered_view = match &metered {
+                Some(e) => ctx.full_view(e),
                 None => ctx.full_view(&input),
             };
             let pipeline = pipelines.composite(variant)?;
@@ -127,6 +156,7 @@ pub fn add_composite<'a>(
                     Descriptor::SampledImage(ctx.full_view(&input), sampler),
                     Descriptor::StorageImage(ctx.view(&output, 0)),
                     Descriptor::SampledImage(bloom_view, sampler),
+                    Descriptor::SampledImage(metered_view, sampler),
                 ],
                 bytemuck::bytes_of(&push),
                 width,

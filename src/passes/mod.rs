@@ -5,6 +5,7 @@ pub mod accumulate;
 pub mod bloom;
 pub mod composite;
 pub mod copy;
+pub mod exposure;
 pub mod present;
 pub mod raymarch;
 
@@ -38,6 +39,7 @@ pub struct Pipelines {
     pub bloom_down: ComputePipeline,
     pub bloom_up: ComputePipeline,
     pub accumulate: ComputePipeline,
+    pub exposure: ComputePipeline,
     pub linear_clamp: Sampler,
     pub sky_sampler: Sampler,
 }
@@ -76,6 +78,13 @@ impl Pipelines {
                 crate::shaders::ACCUMULATE,
                 &[BindingKind::StorageImage, BindingKind::StorageImage],
                 std::mem::size_of::<accumulate::AccumulatePush>() as u32,
+            )?,
+            exposure: ComputePipeline::new(
+                gpu,
+                "exposure",
+                crate::shaders::EXPOSURE,
+                &[BindingKind::SampledImage, BindingKind::StorageImage],
+                std::mem::size_of::<exposure::ExposurePush>() as u32,
             )?,
             linear_clamp: Sampler::linear_clamp(gpu)?,
             sky_sampler: Sampler::linear_repeat_u(gpu)?,
@@ -141,6 +150,7 @@ impl Pipelines {
             let bindings = [
                 BindingKind::SampledImage,
                 BindingKind::StorageImage,
+                BindingKind::SampledImage,
                 BindingKind::SampledImage,
             ];
             ComputePipeline::with_constants(

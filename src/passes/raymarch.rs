@@ -135,7 +135,7 @@ impl RaymarchParams {
                 scene.disk.inner_radius as f32,
                 scene.disk.outer_radius as f32,
                 scene.disk.brightness as f32,
-                0.0,
+                f32::from(u8::from(scene.physics.beaming)),
             ],
             disk_e1: v4(e1, 0.0),
             disk_e2: v4(e2, 0.0),

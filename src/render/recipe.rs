@@ -98,11 +98,15 @@ pub fn add_frame<'a>(
         None => hdr,
     };
     let bloom = passes::bloom::add_bloom(graph, pipelines, &hdr, settings.bloom);
+    let exposure = passes::exposure::add_exposure(graph, pipelines, &hdr, settings.post);
     composite::add_composite(
         graph,
         pipelines,
         &hdr,
-        bloom.as_ref(),
+        composite::CompositeInputs {
+            bloom: bloom.as_ref(),
+            exposure: exposure.as_ref(),
+        },
         settings.bloom,
         settings.post,
         output == FrameOutput::HdrPost,

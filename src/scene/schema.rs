@@ -284,9 +284,12 @@ impl Default for Quality {
 pub struct Physics {
     /// Bend light (off: straight rays; the horizon still absorbs).
     pub gravity: bool,
-    /// Doppler shift and beaming of the orbiting disk.
+    /// Doppler shift of the orbiting disk's colour (its observed temperature).
     pub doppler: bool,
-    /// Gravitational redshift of the disk's light.
+    /// Doppler beaming: the approaching side brighter by g^4, the receding
+    /// side dimmer.
+    pub beaming: bool,
+    /// Gravitational redshift of the disk's light (colour and brightness).
     pub gravitational_redshift: bool,
 }
 
@@ -295,6 +298,7 @@ impl Default for Physics {
         Physics {
             gravity: true,
             doppler: true,
+            beaming: true,
             gravitational_redshift: true,
         }
     }
@@ -304,6 +308,11 @@ impl Default for Physics {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Tonemap {
+    /// The ACES tone curve (Hill's RRT+ODT fit) applied to each pixel's
+    /// brightest channel and the pixel scaled by it: luminance is compressed,
+    /// hue and saturation kept (the disk's colours stay those of the
+    /// blackbody at its observed temperature), nothing clips.
+    HuePreserving,
     /// Stephen Hill's RRT+ODT fit of ACES (the fuller one).
     AcesHill,
     /// Krzysztof Narkowicz's one-line ACES fit.
@@ -316,8 +325,18 @@ pub enum Tonemap {
 #[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Post {
-    /// Exposure in EV stops (x 2^ev before tone mapping).
+    /// Exposure in EV stops (x 2^ev before tone mapping); with
+    /// `auto_exposure`, a compensation added to the metered exposure.
     pub exposure_ev: f64,
+    /// Meter each frame: the mean log luminance of a band of the lit pixels'
+    /// histogram is brought to mid grey.
+    pub auto_exposure: bool,
+    /// The metered band, as fractions of the lit pixels from the darkest.
+    pub meter_low: f64,
+    pub meter_high: f64,
+    /// Colour saturation before the tone map (1: as rendered; above 1 the
+    /// colours move away from grey at the same luminance and hue).
+    pub saturation: f64,
     pub tonemap: Tonemap,
     /// Triangular dither of +-1 step in the 8-bit output.
     pub dither: bool,
@@ -327,7 +346,11 @@ impl Default for Post {
     fn default() -> Self {
         Post {
             exposure_ev: 0.0,
-            tonemap: Tonemap::AcesHill,
+            auto_exposure: true,
+            meter_low: 0.5,
+            meter_high: 0.95,
+            saturation: 1.0,
+            tonemap: Tonemap::HuePreserving,
             dither: true,
         }
     }

@@ -255,7 +255,26 @@ impl Scene {
         non_negative(&key("knee"), b.knee)?;
         count_in(&key("levels"), b.levels, 1, 8)?;
         positive(&key("radius"), b.radius)?;
-        finite(&[Key("post"), Key("exposure_ev")], self.post.exposure_ev)
+        let p = &self.post;
+        finite(&[Key("post"), Key("exposure_ev")], p.exposure_ev)?;
+        rule(
+            (0.0..1.0).contains(&p.meter_low),
+            &[Key("post"), Key("meter_low")],
+            p.meter_low,
+            "must be in [0, 1)",
+        )?;
+        rule(
+            p.saturation.is_finite() && (0.0..=4.0).contains(&p.saturation),
+            &[Key("post"), Key("saturation")],
+            p.saturation,
+            "must be in [0, 4]",
+        )?;
+        rule(
+            p.meter_high > p.meter_low && p.meter_high <= 1.0,
+            &[Key("post"), Key("meter_high")],
+            p.meter_high,
+            "must be in (meter_low, 1]",
+        )
     }
 
     fn validate_animation(&self) -> Check {

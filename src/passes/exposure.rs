@@ -1,0 +1,69 @@
+//! Automatic exposure: one pass meters the HDR image (a histogram of the lit
+//! pixels' log luminance, the mean of a band of its percentiles) into a 1x1
+//! image that the composite multiplies by (`shaders/exposure.comp`). Each
+//! frame is metered on its own, so a sequence's frames do not depend on one
+//! another (sharding and `--resume` give the same frames).
+
+use ash::vk;
+use bytemuck::{Pod, Zeroable};
+
+use super::Pipelines;
+use crate::graph::{Graph, ImageDesc, ImageHandle, Mips};
+use crate::scene::Post;
+use crate::vk::{Access, Descriptor};
+
+/// Mid grey: the luminance the metered band's mean is brought to.
+pub const KEY: f32 = 0.18;
+
+/// Push constants of `shaders/exposure.comp`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct ExposurePush {
+    pub size: [u32; 2],
+    pub low: f32,
+    pub high: f32,
+    pub key: f32,
+}
+
+/// Adds the metering of `hdr` when `post` asks for automatic exposure;
+/// returns the 1x1 exposure image.
+pub fn add_exposure<'a>(
+    graph: &mut Graph<'a>,
+    pipelines: &'a Pipelines,
+    hdr: &ImageHandle,
+    post: &Post,
+) -> Option<ImageHandle> {
+    if !post.auto_exposure {
+        return None;
+    }
+    let mut exposure =
+        graph.create_image("exposure", ImageDesc::new_2d(vk::Format::R32_SFLOAT, 1, 1));
+    let (input, output) = (hdr.clone(), exposure.clone());
+    let push = ExposurePush {
+        size: [hdr.desc.width, hdr.desc.height],
+        low: post.meter_low as f32,
+        high: post.meter_high as f32,
+        key: KEY,
+    };
+    graph
+        .add_pass("exposure")
+        .read(hdr, Access::ComputeSampledRead, Mips::ALL)
+        .write(&mut exposure, Access::ComputeStorageWrite, Mips::ALL)
+        .record(move |ctx| {
+            let pipeline = &pipelines.exposure;
+            crate::vk::bind_compute(
+                ctx.gpu,
+                ctx.cmd,
+                pipeline,
+                &[
+                    Descriptor::SampledImage(ctx.full_view(&input), pipelines.linear_clamp.sampler),
+                    Descriptor::StorageImage(ctx.view(&output, 0)),
+                ],
+            )?;
+            crate::vk::push_constants(ctx.gpu, ctx.cmd, pipeline, bytemuck::bytes_of(&push));
+            // SAFETY: the pipeline and its descriptors are bound on a recording buffer.
+            unsafe { ctx.gpu.device.cmd_dispatch(ctx.cmd, 1, 1, 1) };
+            Ok(())
+        });
+    Some(exposure)
+}

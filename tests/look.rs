@@ -1,0 +1,234 @@
+//! The look on lavapipe, validation required: the tone map keeps each
+//! pixel's hue and clips nothing, the `doppler` preset shows its colours
+//! (figures stated in the README), each physics switch changes the image,
+//! and the automatic exposure meters the light, not the black.
+
+use blackhole::scene::{Bloom, Post, Tonemap};
+use blackhole::vk::Validation;
+use blackhole::{OutputKind, Pixels, Renderer, RendererOptions, Scene};
+
+fn renderer() -> Renderer {
+    Renderer::new(RendererOptions {
+        validation: Validation::Required,
+    })
+    .expect("a Vulkan device with the validation layer")
+}
+
+fn rgba8(f: blackhole::Frame) -> Vec<u8> {
+    match f.pixels {
+        Pixels::Rgba8(p) => p,
+        Pixels::Rgba32F(_) => panic!("expected 8-bit pixels"),
+    }
+}
+
+fn rgba32(f: blackhole::Frame) -> Vec<f32> {
+    match f.pixels {
+        Pixels::Rgba32F(p) => p,
+        Pixels::Rgba8(_) => panic!("expected float pixels"),
+    }
+}
+
+fn srgb_decode(v: u8) -> f64 {
+    let c = f64::from(v) / 255.0;
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+const NO_BLOOM: Bloom = Bloom {
+    strength: 0.0,
+    threshold: 1.0,
+    knee: 0.5,
+    levels: 4,
+    radius: 1.0,
+};
+
+#[test]
+fn the_hue_preserving_tone_map_keeps_channel_ratios_and_never_turns_white() {
+    // Blackbody-like colours from dim to 10^4 times too bright.
+    const N: u32 = 64;
+    let base = [[1.0f32, 0.55, 0.22], [0.75, 0.85, 1.0], [1.0, 0.9, 0.8]];
+    let mut hdr = vec![0.0f32; (4 * N * N) as usize];
+    for y in 0..N {
+        for x in 0..N {
+            let scale = 10f32.powf(-1.0 + 5.0 * x as f32 / (N - 1) as f32);
+            let c = base[(y % 3) as usize];
+            let i = (4 * (y * N + x)) as usize;
+            hdr[i..i + 4].copy_from_slice(&[c[0] * scale, c[1] * scale, c[2] * scale, 1.0]);
+        }
+    }
+    let post = Post {
+        auto_exposure: false,
+        dither: false,
+        tonemap: Tonemap::HuePreserving,
+        ..Post::default()
+    };
+    let mut r = renderer();
+    let out = rgba8(r.post_process(&hdr, N, N, &NO_BLOOM, &post).unwrap());
+    let mut brightest = 0u8;
+    for y in 0..N {
+        for x in 0..N {
+            let i = (4 * (y * N + x)) as usize;
+            let px = &out[i..i + 3];
+            // However bright, a coloured pixel never turns white.
+            assert!(px.iter().any(|&v| v < 240), "({x},{y}) went white: {px:?}");
+            brightest = brightest.max(px[0].max(px[1]).max(px[2]));
+            // Ratios of the decoded channels to the brightest one equal the
+            // input's, to 8-bit precision, wherever the pixel is not dark.
+            let m = px.iter().copied().max().unwrap();
+            if m < 64 {
+                continue;
+            }
+            let c = base[(y % 3) as usize];
+            let cm = c[0].max(c[1]).max(c[2]);
+            for k in 0..3 {
+                let want = f64::from(c[k] / cm);
+                let got = srgb_decode(px[k]) / srgb_decode(m);
+                assert!(
+                    (got - want).abs() < 0.03,
+                    "({x},{y}) channel {k}: ratio {got:.3}, input {want:.3}"
+                );
+            }
+        }
+    }
+    assert!(
+        brightest > 240,
+        "the brightest pixels reach near white: {brightest}"
+    );
+    // ACES Hill on the same input clips the bright end to white.
+    let aces = rgba8(
+        r.post_process(
+            &hdr,
+            N,
+            N,
+            &NO_BLOOM,
+            &Post {
+                tonemap: Tonemap::AcesHill,
+                ..post.clone()
+            },
+        )
+        .unwrap(),
+    );
+    assert!(aces.chunks(4).any(|p| p[..3] == [255, 255, 255]));
+    assert_eq!(r.validation_counts(), (0, 0));
+    r.shutdown().expect("nothing outlives the renderer");
+}
+
+#[test]
+fn automatic_exposure_meters_the_lit_pixels() {
+    // A dark frame with a lit patch: the patch is brought near mid grey
+    // whatever its level, and the black around it does not count.
+    const N: u32 = 64;
+    let mut r = renderer();
+    let post = Post {
+        dither: false,
+        tonemap: Tonemap::Linear,
+        ..Post::default()
+    };
+    for level in [0.01f32, 1.0, 300.0] {
+        let mut hdr = vec![0.0f32; (4 * N * N) as usize];
+        for y in 16..48 {
+            for x in 16..48 {
+                let i = (4 * (y * N + x)) as usize;
+                hdr[i..i + 4].copy_from_slice(&[level, level, level, 1.0]);
+            }
+        }
+        let out = rgba8(r.post_process(&hdr, N, N, &NO_BLOOM, &post).unwrap());
+        let v = srgb_decode(out[(4 * (32 * N + 32)) as usize]);
+        // Mid grey to within the histogram's bin (a third of a stop).
+        assert!((v / 0.18 - 1.0).abs() < 0.15, "level {level}: {v}");
+        assert_eq!(out[0], 0, "black stays black");
+    }
+    assert_eq!(r.validation_counts(), (0, 0));
+    r.shutdown().expect("nothing outlives the renderer");
+}
+
+/// Disk pixels of a frame (from the geodesic AOV) and the figures the
+/// README states for the `doppler` preset: the share of disk pixels at 255
+/// in any channel, and the mean blue share B / (R + G + B) of the right
+/// (approaching) and left halves.
+fn doppler_figures(r: &mut Renderer, scene: &Scene, w: u32, h: u32) -> (f64, f64, f64) {
+    let ldr = rgba8(r.render(scene, w, h, OutputKind::Ldr).unwrap());
+    let aov = rgba32(r.render(scene, w, h, OutputKind::Geodesic).unwrap());
+    let (mut disk, mut at_255) = (0usize, 0usize);
+    let mut share = [(0.0f64, 0usize); 2];
+    for y in 0..h {
+        for x in 0..w {
+            let i = (4 * (y * w + x)) as usize;
+            if (aov[i + 3] - 2.0).abs() > 0.5 {
+                continue;
+            }
+            disk += 1;
+            let px = &ldr[i..i + 3];
+            if px.contains(&255) {
+                at_255 += 1;
+            }
+            let sum: f64 = px.iter().map(|&v| f64::from(v)).sum();
+            let half = usize::from(x >= w / 2);
+            if sum > 0.0 {
+                share[half].0 += f64::from(px[2]) / sum;
+            }
+            share[half].1 += 1;
+        }
+    }
+    assert!(disk > 1000, "the disk is in view: {disk} pixels");
+    let mean = |(s, n): (f64, usize)| s / n.max(1) as f64;
+    (at_255 as f64 / disk as f64, mean(share[1]), mean(share[0]))
+}
+
+#[test]
+fn the_doppler_preset_shows_blue_white_approaching_and_orange_receding() {
+    let mut r = renderer();
+    let scene = Scene::load("doppler").unwrap();
+    let (clipped, right, left) = doppler_figures(&mut r, &scene, 640, 360);
+    println!(
+        "doppler 640x360: disk pixels at 255 {:.2} %, blue share approaching (right) {right:.3}, receding (left) {left:.3}, difference {:.3}",
+        100.0 * clipped,
+        right - left
+    );
+    assert!(
+        clipped < 0.02,
+        "{:.2} % of disk pixels clip",
+        100.0 * clipped
+    );
+    assert!(right - left >= 0.12, "blue share {right:.3} vs {left:.3}");
+    assert_eq!(r.validation_counts(), (0, 0));
+    r.shutdown().expect("nothing outlives the renderer");
+}
+
+#[test]
+fn each_physics_switch_changes_the_disk() {
+    let mut r = renderer();
+    let mut scene = Scene::load("doppler").unwrap();
+    scene.post.auto_exposure = false;
+    scene.post.dither = false;
+    scene.bloom.strength = 0.0;
+    let (w, h) = (160, 90);
+    let mut with = |doppler, beaming, redshift| {
+        scene.physics.doppler = doppler;
+        scene.physics.beaming = beaming;
+        scene.physics.gravitational_redshift = redshift;
+        rgba8(r.render(&scene, w, h, OutputKind::Ldr).unwrap())
+    };
+    let none = with(false, false, false);
+    let mean_abs_diff = |a: &[u8], b: &[u8]| {
+        a.iter()
+            .zip(b)
+            .map(|(&x, &y)| f64::from(x.abs_diff(y)))
+            .sum::<f64>()
+            / a.len() as f64
+    };
+    for (name, img) in [
+        ("doppler", with(true, false, false)),
+        ("beaming", with(false, true, false)),
+        ("gravitational redshift", with(false, false, true)),
+    ] {
+        let d = mean_abs_diff(&img, &none);
+        println!("{name} alone: mean change {d:.2} of 255");
+        assert!(d > 2.0, "{name} alone changes the image by only {d:.2}");
+    }
+    assert_eq!(r.validation_counts(), (0, 0));
+    r.shutdown().expect("nothing outlives the renderer");
+}
