@@ -18,6 +18,12 @@ layout(constant_id = 1) const int DISK_KIND = 1;
 layout(constant_id = 2) const int SKY_KIND = 2;
 // The grid plane is drawn.
 layout(constant_id = 3) const bool GRID_PLANE = false;
+// The thin disk is seen as it was when its light left it (one hole).
+layout(constant_id = 4) const bool LIGHT_DELAY = false;
+// The thin disk has filaments and clumps (its `structure` key above 0).
+layout(constant_id = 5) const bool THIN_STRUCTURE = false;
+// Thin-disk crossings a ray may see (2 when the disk lets light through).
+layout(constant_id = 6) const int THIN_CROSSINGS = 1;
 
 #include "params.glsl"
 #include "geodesic.glsl"
@@ -42,6 +48,8 @@ vec3 blackbody(float t) {
 // The image sky's panorama with mips (or the colour table, unused, when the
 // sky is not an image).
 layout(binding = 3) uniform sampler2D sky_tex;
+// The thin disk's tileable noise (src/render/resources.rs, `disk_noise`).
+layout(binding = 4) uniform sampler2D disk_noise;
 
 #include "sky.glsl"
 
@@ -71,6 +79,28 @@ vec3 disk_color(float r, float g_full) {
 
 #include "noise.glsl"
 #include "volume.glsl"
+
+// The thin disk's structure: its density (mean about 1) at radius r and
+// azimuth az (disk frame) at rotation time t (speed x time). Each element
+// turns with the Keplerian angular velocity of its radius, so the pattern
+// shears (faster inside) and winds into ever finer arcs as time goes on.
+// The tileable noise is read in the co-moving angle (once around the
+// texture per turn) and stretched across log r: long thin arcs. One filtered
+// fetch; the contrast curve squares it into bright filaments and dark lanes.
+float thin_disk_density(float r, float az, float t) {
+    float rs = P.holes[0].w;
+    float phi = az - sqrt(0.5 * rs / (r * r * r)) * t;
+    vec2 uv = vec2(phi * (1.0 / 6.2831853), 1.6 * log(r / rs));
+    float n = textureLod(disk_noise, uv, 0.0).r;
+    float d = max(1.0 + 2.6 * (n - 0.5), 0.0);
+    return mix(1.0, d * d, P.disk_look.x);
+}
+
+// Azimuth of a point in the disk's frame (the AOV's convention).
+float disk_azimuth(vec3 p) {
+    vec3 d = p - P.holes[0].xyz;
+    return atan(dot(d, P.disk_e2.xyz), dot(d, P.disk_e1.xyz));
+}
 
 #define OUT_ESCAPED 0
 #define OUT_CAPTURED 1
@@ -218,6 +248,63 @@ void volume_crossing(LightPath path, float phi_j, float tilt, vec2 inside, vec3 
 
 const int VOLUME_CROSSINGS = 4;
 
+// Coordinate time the light takes from angle phi on the path back to the
+// camera (phi = 0), in the units of the scene (c = 1): the integral of dt/dphi = r^2 / (b (1 - rs/r))
+// by Simpson's rule over eight intervals of the exact path. Only the
+// differences across the disk matter (what turns where while the light is
+// on its way), and those are good to a few per cent.
+float light_travel_time(LightPath path, float phi, float b, float rs) {
+    const int N = 8;
+    float h = phi / float(N);
+    float sum = 0.0;
+    for (int i = 0; i <= N; ++i) {
+        float u = max(path_u_coarse(path, h * float(i)), 1e-6);
+        float r = rs / u;
+        float f = r * r / (b * max(1.0 - u, 1e-3));
+        float w = (i == 0 || i == N) ? 1.0 : ((i & 1) == 1 ? 4.0 : 2.0);
+        sum += w * f;
+    }
+    return sum * h / 3.0;
+}
+
+// The thin disk's first crossing inside the annulus from angle `next` on
+// (advanced past it): its light added to the hit, weighted by its opacity.
+// True when the ray ends there (opaque, or the AOV's first hit).
+bool thin_crossing(LightPath path, inout float next, vec3 c, vec3 e1, vec3 e2, float rs,
+                   float lambda, float b_imp, inout Hit hit) {
+    float phi = min(first_crossing_in(path, path.win_a, next),
+                    first_crossing_in(path, path.win_b, next));
+    if (phi >= 1e29) {
+        next = 1e30;
+        return false;
+    }
+    next = phi + PI;
+    float r = rs / path_u(path, phi);
+    // The windows' edges are rounded; the radius decides.
+    if (r < P.disk.x || r > P.disk.y) return false;
+    vec3 pos = c + r * (cos(phi) * e1 + sin(phi) * e2);
+    float omega = sqrt(0.5 * rs / (r * r * r));
+    float g = sqrt(max(1.0 - 1.5 * rs / r, 0.0)) / (1.0 - omega * lambda);
+#ifdef GEODESIC_AOV
+    hit.outcome = OUT_DISK;
+    hit.pos = pos;
+    hit.g = g;
+    return true;
+#else
+    float t = P.vol1.y;
+    if (LIGHT_DELAY) t -= P.disk_look.z * light_travel_time(path, phi, b_imp, rs);
+    float dens = THIN_STRUCTURE ? thin_disk_density(r, disk_azimuth(pos), t) : 1.0;
+    float alpha = clamp(P.disk_look.y * dens, 0.0, 1.0);
+    hit.glow += hit.trans * alpha * dens * disk_color(r, g * observer_g);
+    hit.trans *= 1.0 - alpha;
+    if (hit.trans < 0.003) {
+        hit.outcome = OUT_CAPTURED;  // opaque: nothing behind shows
+        return true;
+    }
+    return false;
+#endif
+}
+
 // One hole: the path lies in the plane of the hole, the camera and the ray,
 // and its shape u(phi) is known in closed form (lightpath.glsl). Disk
 // crossings are where the orbit plane meets the disk plane (phi_0 + k pi),
@@ -263,22 +350,15 @@ Hit trace_planar(vec3 x, vec3 d) {
     if (kind != DISK_NONE && tilt > 1e-6) {
         float phi0 = atan(-na, nb);       // a cos(phi) + b sin(phi) = 0
         if (kind == DISK_THIN) {
-            // The first plane crossing inside the annulus: the first crossing
+            // The plane crossings inside the annulus: the first crossing
             // angle in either window where u is in [rs/outer, rs/inner]; one
-            // evaluation of the path, no loop.
-            float first = phi0 <= 1e-6 ? phi0 + PI : phi0;  // the next crossing ahead
-            float phi = min(first_crossing_in(path, path.win_a, first),
-                            first_crossing_in(path, path.win_b, first));
-            if (phi < 1e29) {
-                float r = rs / path_u(path, phi);
-                // The windows' edges are rounded; the radius decides.
-                if (r >= P.disk.x && r <= P.disk.y) {
-                    hit.outcome = OUT_DISK;
-                    hit.pos = c + r * (cos(phi) * e1 + sin(phi) * e2);
-                    float omega = sqrt(0.5 * rs / (r * r * r));
-                    hit.g = sqrt(max(1.0 - 1.5 * rs / r, 0.0)) / (1.0 - omega * lambda);
-                    return hit;
-                }
+            // evaluation of the path each. Where the disk is thin (its
+            // structure, its opacity) the light behind comes through: the
+            // next crossing (THIN_CROSSINGS = 2), then the sky.
+            float next = phi0 <= 1e-6 ? phi0 + PI : phi0;  // the next crossing ahead
+            if (thin_crossing(path, next, c, e1, e2, rs, lambda, b_imp, hit)) return hit;
+            if (THIN_CROSSINGS > 1 && next < 1e29) {
+                if (thin_crossing(path, next, c, e1, e2, rs, lambda, b_imp, hit)) return hit;
             }
         } else if (volumetric()) {
             // From the crossing behind the camera when the camera is in the
@@ -467,7 +547,13 @@ void main() {
         color = sky_color(hit.dir, pixel_angle);
         grid_plane(hit.pos, hit.dir, pixel_angle, color);
     }
-    else if (hit.outcome == OUT_DISK) color = disk_color(length(hit.pos - P.holes[0].xyz), hit.g);
+    else if (!ONE_HOLE && hit.outcome == OUT_DISK) {
+        // The general path's disk (several holes, gravity off): opaque. (The
+        // closed-form path adds the disk's light as it goes; compiled out.)
+        float r = length(hit.pos - P.holes[0].xyz);
+        float dens = THIN_STRUCTURE ? thin_disk_density(r, disk_azimuth(hit.pos), P.vol1.y) : 1.0;
+        color = dens * disk_color(r, hit.g);
+    }
     color = hit.glow + hit.trans * color;
     imageStore(out_img, ivec2(px), vec4(color, 1.0));
 #endif

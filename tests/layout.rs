@@ -67,6 +67,7 @@ fn raymarch_params_match_the_glsl_block() {
         offset_of!(RaymarchParams, integ),
         offset_of!(RaymarchParams, observer),
         offset_of!(RaymarchParams, observer_r),
+        offset_of!(RaymarchParams, disk_look),
         offset_of!(RaymarchParams, counts),
         offset_of!(RaymarchParams, holes),
     ];

@@ -48,6 +48,7 @@ layout(std430, binding = 1) readonly buffer RaymarchParams {
     vec4 integ;        // x: tolerance, y: escape radius, z: gravity on (1/0), w: unused
     vec4 observer;     // xyz: the camera's velocity in the static frame (world axes); w: observer kind
     vec4 observer_r;   // xyz: unit vector from the reference hole to the camera; w: sqrt(1 - rs/r) (1: flat)
+    vec4 disk_look;    // thin disk: x: structure, y: opacity, z: speed (x Keplerian), w: unused
     uvec4 counts;      // x: hole count, y: width, z: height, w: step budget
     vec4 holes[MAX_HOLES]; // xyz: position, w: rs
 } P;

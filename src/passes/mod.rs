@@ -21,9 +21,10 @@ use crate::vk::{BindingKind, ComputePipeline, Gpu, Sampler};
 /// (1,000 frames at 160x90 took 640 MB; the same with a storage buffer, 120
 /// MB) and cost twice the time. Found by skipping one pass's dispatch at a
 /// time; the layout is the same (every member a vec4).
-const RAYMARCH_BINDINGS: [BindingKind; 4] = [
+const RAYMARCH_BINDINGS: [BindingKind; 5] = [
     BindingKind::StorageImage,
     BindingKind::StorageBuffer,
+    BindingKind::SampledImage,
     BindingKind::SampledImage,
     BindingKind::SampledImage,
 ];
@@ -42,6 +43,7 @@ pub struct Pipelines {
     pub exposure: ComputePipeline,
     pub linear_clamp: Sampler,
     pub sky_sampler: Sampler,
+    pub repeat_sampler: Sampler,
 }
 
 impl Pipelines {
@@ -88,6 +90,7 @@ impl Pipelines {
             )?,
             linear_clamp: Sampler::linear_clamp(gpu)?,
             sky_sampler: Sampler::linear_repeat_u(gpu)?,
+            repeat_sampler: Sampler::linear_repeat(gpu)?,
         })
     }
 }

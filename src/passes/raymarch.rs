@@ -67,6 +67,7 @@ pub struct RaymarchParams {
     pub integ: [f32; 4],
     pub observer: [f32; 4],
     pub observer_r: [f32; 4],
+    pub disk_look: [f32; 4],
     pub counts: [u32; 4],
     pub holes: [[f32; 4]; MAX_HOLES],
 }
@@ -181,6 +182,12 @@ impl RaymarchParams {
             ],
             observer: v4(obs.beta, f64::from(obs.kind as u32)),
             observer_r: v4(obs.rhat, obs.lapse),
+            disk_look: [
+                scene.disk.structure as f32,
+                scene.disk.opacity as f32,
+                d.speed as f32,
+                0.0,
+            ],
             counts: [
                 scene.black_holes.len().min(MAX_HOLES) as u32,
                 width,
@@ -197,6 +204,8 @@ pub struct RaymarchInputs<'h> {
     /// The [`RaymarchParams`] buffer, written by the host this frame.
     pub params: &'h BufferHandle,
     pub disk_lut: &'h ImageHandle,
+    /// The thin disk's tileable noise (`render::resources::disk_noise`).
+    pub disk_noise: &'h ImageHandle,
     /// The image sky; the colour table again when the sky is not an image
     /// (the binding must hold something; the shader never samples it).
     pub sky: &'h ImageHandle,
@@ -220,6 +229,13 @@ pub struct Variant {
     pub sky: u32,
     /// The grid plane is on (constant 3).
     pub plane: bool,
+    /// The disk is seen as it was when its light left (constant 4).
+    pub light_delay: bool,
+    /// The thin disk's filaments and clumps (constant 5).
+    pub structure: bool,
+    /// Thin-disk crossings a ray may see: 2 where light comes through it
+    /// (constant 6).
+    pub thin_crossings: u32,
 }
 
 impl Variant {
@@ -231,31 +247,51 @@ impl Variant {
             disk: disk_kind(scene),
             sky: sky_kind(scene),
             plane: scene.plane.enabled,
+            light_delay: scene.animation.light_travel_time && !aov,
+            structure: scene.disk.structure > 0.0,
+            thin_crossings: if scene.disk.structure > 0.0 || scene.disk.opacity < 1.0 {
+                2
+            } else {
+                1
+            },
         }
     }
 
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against raymarch.comp).
-    pub const CONSTANT_NAMES: [&'static str; 4] =
-        ["ONE_HOLE", "DISK_KIND", "SKY_KIND", "GRID_PLANE"];
+    pub const CONSTANT_NAMES: [&'static str; 7] = [
+        "ONE_HOLE",
+        "DISK_KIND",
+        "SKY_KIND",
+        "GRID_PLANE",
+        "LIGHT_DELAY",
+        "THIN_STRUCTURE",
+        "THIN_CROSSINGS",
+    ];
 
-    pub fn constants(&self) -> [u32; 4] {
+    pub fn constants(&self) -> [u32; 7] {
         [
             u32::from(self.one_hole),
             self.disk,
             self.sky,
             u32::from(self.plane),
+            u32::from(self.light_delay),
+            u32::from(self.structure),
+            self.thin_crossings,
         ]
     }
 
     pub fn name(&self) -> String {
         format!(
-            "raymarch{} (one hole {}, disk {}, sky {}, plane {})",
+            "raymarch{} (one hole {}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {})",
             if self.aov { " aov" } else { "" },
             self.one_hole,
             self.disk,
             self.sky,
-            self.plane
+            self.plane,
+            self.light_delay,
+            self.structure,
+            self.thin_crossings
         )
     }
 }
@@ -269,6 +305,7 @@ pub fn add_raymarch<'a>(
     let RaymarchInputs {
         params,
         disk_lut,
+        disk_noise,
         sky,
         output,
         size: (width, height),
@@ -281,10 +318,12 @@ pub fn add_raymarch<'a>(
 
     let mut hdr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
     let (out, lut, sky_tex, ubo) = (hdr.clone(), disk_lut.clone(), sky.clone(), params.clone());
+    let noise = disk_noise.clone();
     let mut pass = graph
         .add_pass("raymarch")
         .read_buffer(params, Access::ComputeStorageRead)
-        .read(disk_lut, Access::ComputeSampledRead, Mips::ALL);
+        .read(disk_lut, Access::ComputeSampledRead, Mips::ALL)
+        .read(disk_noise, Access::ComputeSampledRead, Mips::ALL);
     if sky != disk_lut {
         pass = pass.read(sky, Access::ComputeSampledRead, Mips::ALL);
     }
@@ -302,6 +341,10 @@ pub fn add_raymarch<'a>(
                     Descriptor::SampledImage(
                         ctx.full_view(&sky_tex),
                         pipelines.sky_sampler.sampler,
+                    ),
+                    Descriptor::SampledImage(
+                        ctx.full_view(&noise),
+                        pipelines.repeat_sampler.sampler,
                     ),
                 ],
                 &[],

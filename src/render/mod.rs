@@ -526,7 +526,7 @@ fn add_scene_frame<'a>(
     accumulation: Option<Accumulation<'_>>,
 ) -> ImageHandle {
     let params = g.import_buffer("raymarch params", params, Access::HostWrite, None);
-    let (lut, sky) = import_scene_images(g, resources);
+    let (lut, noise, sky) = import_scene_images(g, resources);
     add_frame(
         g,
         pipelines,
@@ -534,6 +534,7 @@ fn add_scene_frame<'a>(
             scene,
             params: &params,
             disk_lut: &lut,
+            disk_noise: &noise,
             sky: &sky,
             size,
         },
@@ -548,11 +549,21 @@ fn add_scene_frame<'a>(
 
 /// Imports the colour table and the sky (the table again when the sky is not
 /// an image: the binding must hold something).
-fn import_scene_images(g: &mut Graph<'_>, res: &SceneResources) -> (ImageHandle, ImageHandle) {
+fn import_scene_images(
+    g: &mut Graph<'_>,
+    res: &SceneResources,
+) -> (ImageHandle, ImageHandle, ImageHandle) {
     let lut = g.import_image(
         "disk lut",
         res.disk_lut.desc,
         res.disk_lut.binding(),
+        Access::ComputeSampledRead,
+        Some(Access::ComputeSampledRead),
+    );
+    let noise = g.import_image(
+        "disk noise",
+        res.disk_noise.desc,
+        res.disk_noise.binding(),
         Access::ComputeSampledRead,
         Some(Access::ComputeSampledRead),
     );
@@ -566,5 +577,5 @@ fn import_scene_images(g: &mut Graph<'_>, res: &SceneResources) -> (ImageHandle,
         ),
         None => lut.clone(),
     };
-    (lut, sky)
+    (lut, noise, sky)
 }

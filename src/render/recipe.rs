@@ -17,6 +17,7 @@ pub enum HdrSource<'h> {
         scene: &'h Scene,
         params: &'h BufferHandle,
         disk_lut: &'h ImageHandle,
+        disk_noise: &'h ImageHandle,
         sky: &'h ImageHandle,
         size: (u32, u32),
     },
@@ -67,6 +68,7 @@ pub fn add_frame<'a>(
             scene,
             params,
             disk_lut,
+            disk_noise,
             sky,
             size,
         } => raymarch::add_raymarch(
@@ -75,6 +77,7 @@ pub fn add_frame<'a>(
             raymarch::RaymarchInputs {
                 params,
                 disk_lut,
+                disk_noise,
                 sky,
                 output: if output == FrameOutput::Geodesic {
                     raymarch::RaymarchOutput::Geodesic

@@ -18,6 +18,8 @@ use crate::{Error, Result};
 /// pool their uploads use (separate from the frame slots').
 pub struct SceneResources {
     pub disk_lut: Image,
+    /// The thin disk's tileable noise ([`disk_noise`]).
+    pub disk_noise: Image,
     /// The image sky in use, with the files it came from.
     pub sky: Option<(Vec<PathBuf>, Image)>,
     transients: TransientPool,
@@ -31,8 +33,19 @@ impl SceneResources {
         let mut commands = CommandContext::new(gpu)?;
         let mut transients = TransientPool::new(gpu);
         let disk_lut = upload_disk_lut(gpu, &mut commands, &mut transients)?;
+        let texels = disk_noise();
+        let disk_noise = upload_image(
+            gpu,
+            &mut commands,
+            &mut transients,
+            "disk noise",
+            ImageDesc::new_2d(vk::Format::R8_UNORM, NOISE_SIZE, NOISE_SIZE),
+            &texels,
+            1,
+        )?;
         Ok(SceneResources {
             disk_lut,
+            disk_noise,
             sky: None,
             transients,
             commands,
@@ -182,4 +195,53 @@ fn upload_sky(
         bytemuck::cast_slice(&halves),
         8,
     )
+}
+
+/// Side of the thin disk's noise texture, texels.
+pub const NOISE_SIZE: u32 = 256;
+
+/// The thin disk's structure: tileable value noise, four octaves of a
+/// periodic lattice (8, 16, 32, 64 cells across) with quintic smoothing,
+/// as 8-bit texels (mean about 0.5). The ray march reads it in the
+/// co-moving angle and log radius (raymarch.comp, `thin_disk_density`):
+/// one filtered fetch instead of octaves of procedural noise per pixel.
+pub fn disk_noise() -> Vec<u8> {
+    let n = NOISE_SIZE as usize;
+    let hash = |x: u32, y: u32, o: u32| -> f32 {
+        let mut v = x
+            .wrapping_mul(0x8da6_b343)
+            .wrapping_add(y.wrapping_mul(0xd816_3841))
+            .wrapping_add(o.wrapping_mul(0xcb1a_b31f));
+        v ^= v >> 15;
+        v = v.wrapping_mul(0x2c1b_3c6d);
+        v ^= v >> 12;
+        v = v.wrapping_mul(0x297a_2d39);
+        v ^= v >> 15;
+        (v >> 8) as f32 / (1u32 << 24) as f32
+    };
+    let smooth = |t: f32| t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+    let mut field = vec![0.0f32; n * n];
+    let mut amp = 1.0f32;
+    let mut total = 0.0f32;
+    for (octave, cells) in [8u32, 16, 32, 64].into_iter().enumerate() {
+        let step = n as f32 / cells as f32;
+        for y in 0..n {
+            for x in 0..n {
+                let (fx, fy) = (x as f32 / step, y as f32 / step);
+                let (x0, y0) = (fx.floor() as u32, fy.floor() as u32);
+                let (tx, ty) = (smooth(fx.fract()), smooth(fy.fract()));
+                let o = octave as u32;
+                let at = |i: u32, j: u32| hash(i % cells, j % cells, o);
+                let top = at(x0, y0) + tx * (at(x0 + 1, y0) - at(x0, y0));
+                let bottom = at(x0, y0 + 1) + tx * (at(x0 + 1, y0 + 1) - at(x0, y0 + 1));
+                field[y * n + x] += amp * (top + ty * (bottom - top));
+            }
+        }
+        total += amp;
+        amp *= 0.55;
+    }
+    field
+        .iter()
+        .map(|v| ((v / total).clamp(0.0, 1.0) * 255.0).round() as u8)
+        .collect()
 }

@@ -55,6 +55,10 @@ pub struct Animation {
     pub keyframes: Vec<Keyframe>,
     /// `camera = "fall"`: seconds of animation from the start to 1.05 rs.
     pub fall_seconds: f64,
+    /// Show the disk as it was when its light left it (one hole): each
+    /// point's time is the frame's time less the light's travel time along
+    /// its path (one second of animation is one rs/c x `speed`).
+    pub light_travel_time: bool,
 }
 
 impl Default for Animation {
@@ -67,6 +71,7 @@ impl Default for Animation {
             inclination_deg: 3.0,
             keyframes: Vec::new(),
             fall_seconds: 10.0,
+            light_travel_time: false,
         }
     }
 }

@@ -117,6 +117,13 @@ pub struct Disk {
     pub brightness: f64,
     /// Temperature of the hottest ring, kelvin (Novikov-Thorne profile).
     pub temperature_k: f64,
+    /// Thin disk: contrast of its filaments and clumps (0: smooth, the
+    /// bare Novikov-Thorne disk; 1: fully structured). Each element turns
+    /// with its own Keplerian orbit (`speed`, time from [animation]).
+    pub structure: f64,
+    /// Thin disk: opacity where the density is average (1: opaque there;
+    /// thinner parts let the light behind through).
+    pub opacity: f64,
     /// Volumetric disk: half-thickness.
     pub height: f64,
     /// Volumetric disk: exponent of the fall of density with height.
@@ -127,7 +134,7 @@ pub struct Disk {
     pub noise_scale: f64,
     /// Volumetric disk: octaves of noise (1 to 8).
     pub noise_octaves: u32,
-    /// Volumetric disk: how fast the gas turns (x Keplerian; time from [animation]).
+    /// How fast the gas turns (x Keplerian; time from [animation]).
     pub speed: f64,
     /// Volumetric disk: emission scale.
     pub lit: f64,
@@ -153,6 +160,8 @@ impl Default for Disk {
             outer_radius: 12.0,
             brightness: 1.2,
             temperature_k: 6000.0,
+            structure: 0.8,
+            opacity: 1.0,
             height: 0.5,
             density_v: 2.0,
             density_h: 1.5,

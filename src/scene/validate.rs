@@ -188,6 +188,9 @@ impl Scene {
         non_negative(&key("density_v"), d.density_v)?;
         non_negative(&key("density_h"), d.density_h)?;
         non_negative(&key("lit"), d.lit)?;
+        for (name, v) in [("structure", d.structure), ("opacity", d.opacity)] {
+            rule((0.0..=1.0).contains(&v), &key(name), v, "must be in [0, 1]")?;
+        }
         finite(&key("speed"), d.speed)?;
         count_in(&key("noise_octaves"), d.noise_octaves, 1, 8)?;
         rule(

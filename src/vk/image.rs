@@ -187,13 +187,32 @@ impl Sampler {
         Self::linear(gpu, "the sky sampler", vk::SamplerAddressMode::REPEAT)
     }
 
+    /// Bilinear, repeating in both directions (tileable textures).
+    pub fn linear_repeat(gpu: &Arc<Gpu>) -> Result<Self> {
+        Self::linear_modes(
+            gpu,
+            "the repeating sampler",
+            vk::SamplerAddressMode::REPEAT,
+            vk::SamplerAddressMode::REPEAT,
+        )
+    }
+
     fn linear(gpu: &Arc<Gpu>, what: &str, address_u: vk::SamplerAddressMode) -> Result<Self> {
+        Self::linear_modes(gpu, what, address_u, vk::SamplerAddressMode::CLAMP_TO_EDGE)
+    }
+
+    fn linear_modes(
+        gpu: &Arc<Gpu>,
+        what: &str,
+        address_u: vk::SamplerAddressMode,
+        address_v: vk::SamplerAddressMode,
+    ) -> Result<Self> {
         let info = vk::SamplerCreateInfo::default()
             .mag_filter(vk::Filter::LINEAR)
             .min_filter(vk::Filter::LINEAR)
             .mipmap_mode(vk::SamplerMipmapMode::LINEAR)
             .address_mode_u(address_u)
-            .address_mode_v(vk::SamplerAddressMode::CLAMP_TO_EDGE)
+            .address_mode_v(address_v)
             .address_mode_w(vk::SamplerAddressMode::CLAMP_TO_EDGE)
             .max_lod(vk::LOD_CLAMP_NONE);
         // SAFETY: valid device.
