@@ -3,8 +3,9 @@
 // luminance, the mean of a band of its percentiles): one workgroup reads a
 // grid of at most 256 x 144 pixels of the HDR image, bins the log2 luminance
 // of the lit ones (the black shadow and empty sky would pull the mean down
-// without saying anything about the light), and writes the exposure that
-// brings the band's mean luminance to the key value (mid grey, 0.18).
+// without saying anything about the light), each weighted by its brightness,
+// and writes the exposure that brings the band's mean luminance to the key
+// value (mid grey, 0.18).
 
 layout(local_size_x = 256) in;
 
@@ -40,7 +41,11 @@ void main() {
         if (l > LIT) {
             float f = (log2(l) - LOG_MIN) / (LOG_MAX - LOG_MIN);
             uint b = uint(clamp(f * float(BINS), 0.0, float(BINS - 1)));
-            atomicAdd(hist[b], 1u);
+            // Brighter pixels weigh more (about l^0.73, up to 2^16 each so
+            // the 36,864 samples cannot overflow): the light that fills the
+            // frame sets its exposure, not a sky of faint stars around a
+            // small bright disk.
+            atomicAdd(hist[b], uint(exp2(16.0 * float(b) / float(BINS - 1))));
         }
     }
     barrier();

@@ -34,13 +34,19 @@ fn default_scene_renders_shadow_disk_and_sky_without_validation_messages() {
     // hole (radius ~5 to ~10 along the centre column): the warm colour of a
     // 5500 K blackbody seen redshifted, unlike either checker tone of the sky
     // (which are blue-grey).
-    for y in [50, 53, 56] {
+    // Its filaments make single pixels dark or bright: the mean of the
+    // stretch is taken.
+    let mut mean = [0.0f32; 3];
+    for y in 48..=58 {
         let p = img.get_pixel(80, y);
-        assert!(
-            p[0] > 100 && p[0] > p[2].saturating_add(40) && p[0] >= p[1] && p[1] >= p[2],
-            "disk pixel (80,{y}) = {p:?}"
-        );
+        for k in 0..3 {
+            mean[k] += f32::from(p[k]) / 11.0;
+        }
     }
+    assert!(
+        mean[0] > 70.0 && mean[0] > mean[2] + 25.0 && mean[0] >= mean[1] && mean[1] >= mean[2],
+        "disk pixels (80, 48..=58), mean {mean:?}"
+    );
     // Not uniform: the luminance spread is wide.
     let l: Vec<f32> = img.pixels().map(luma).collect();
     let mean = l.iter().sum::<f32>() / l.len() as f32;
@@ -174,11 +180,12 @@ fn doppler_brightens_the_approaching_side_and_the_film_look_is_symmetric() {
     let dir = scratch();
     // The disk turns counter-clockwise seen from +y, so its right (+x) side
     // comes toward the camera on -z.
-    let physical = render_small(&dir, "physical", "");
+    // A smooth disk, so mirrored pixels differ only by the shifts.
+    let physical = render_small(&dir, "physical", "[disk]\nstructure = 0.0\n");
     let film = render_small(
         &dir,
         "film",
-        "[physics]\ndoppler = false\ngravitational_redshift = false\n",
+        "[disk]\nstructure = 0.0\n[physics]\ndoppler = false\nbeaming = false\ngravitational_redshift = false\n",
     );
     for (x, y) in [(20, 53), (40, 56), (60, 50)] {
         let (left, right) = (physical.get_pixel(x, y), physical.get_pixel(159 - x, y));
@@ -381,10 +388,14 @@ fn exr_post_applies_exposure_and_bloom_but_stays_linear() {
         assert_clean(code, &stdout, &stderr);
         image::open(&out).unwrap().to_rgba32f()
     };
-    let plain = render("plain", "[post]\nexposure_ev = 1.0\n", false);
+    let plain = render(
+        "plain",
+        "[post]\nexposure_ev = 1.0\nauto_exposure = false\n",
+        false,
+    );
     let exposed = render(
         "exposed",
-        "[post]\nexposure_ev = 1.0\n[bloom]\nstrength = 0.0\n",
+        "[post]\nexposure_ev = 1.0\nauto_exposure = false\n[bloom]\nstrength = 0.0\n",
         true,
     );
     // One stop: twice the radiance (f16 storage: 1e-3 relative).
@@ -401,7 +412,7 @@ fn exr_post_applies_exposure_and_bloom_but_stays_linear() {
     // Bloom adds light.
     let bloomed = render(
         "bloomed",
-        "[post]\nexposure_ev = 1.0\n[bloom]\nstrength = 1.0\nthreshold = 0.5\n",
+        "[post]\nexposure_ev = 1.0\nauto_exposure = false\n[bloom]\nstrength = 1.0\nthreshold = 0.5\n",
         true,
     );
     let sum = |img: &image::Rgba32FImage| {

@@ -15,8 +15,10 @@ fn renderer() -> Renderer {
 fn frames_are_timed_per_pass_and_validation_stays_silent() {
     let mut r = renderer();
     let mut scene = Scene::builtin_default().unwrap();
-    // Bloom has its own tests (tests/bloom.rs); here the plain chain.
+    // Bloom and exposure have their own tests (tests/bloom.rs,
+    // tests/look.rs); here the plain chain.
     scene.bloom.strength = 0.0;
+    scene.post.auto_exposure = false;
     // Two LDR frames (the second reuses the transients), then an HDR frame whose
     // graph culls the composite.
     for _ in 0..2 {

@@ -12,7 +12,7 @@ fn scene(sky: &str, look: [f64; 3]) -> String {
         "[camera]\nposition = [0.0, 0.0, 0.0]\nlook_at = [{}, {}, {}]\nvfov_deg = 20.0\n\n\
          [[black_hole]]\nposition = [500.0, 500.0, 500.0]\nrs = 0.01\n\n\
          [disk]\nkind = \"none\"\n\n[physics]\ngravity = false\n\n[bloom]\nstrength = 0.0\n\n\
-         [post]\ntonemap = \"linear\"\ndither = false\n\n[sky]\n{sky}",
+         [post]\nauto_exposure = false\ntonemap = \"linear\"\ndither = false\n\n[sky]\n{sky}",
         look[0], look[1], look[2]
     )
 }

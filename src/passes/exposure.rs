@@ -12,8 +12,9 @@ use crate::graph::{Graph, ImageDesc, ImageHandle, Mips};
 use crate::scene::Post;
 use crate::vk::{Access, Descriptor};
 
-/// Mid grey: the luminance the metered band's mean is brought to.
-pub const KEY: f32 = 0.18;
+/// The luminance the metered band's mean is brought to: the band is
+/// weighted toward the bright pixels, so this sits above mid grey (0.18).
+pub const KEY: f32 = 0.45;
 
 /// Push constants of `shaders/exposure.comp`.
 #[repr(C)]
