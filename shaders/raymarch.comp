@@ -14,7 +14,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(constant_id = 0) const bool ONE_HOLE = false;
 // The disk kind (DISK_NONE, DISK_THIN, DISK_VOLUME).
 layout(constant_id = 1) const int DISK_KIND = 1;
-// The sky kind (SKY_BLACK, SKY_CHECKER, SKY_STARS, SKY_IMAGE).
+// The sky kind (SKY_BLACK, SKY_CHECKER, SKY_STARS, SKY_IMAGE, SKY_CATALOGUE).
 layout(constant_id = 2) const int SKY_KIND = 2;
 // The grid plane is drawn.
 layout(constant_id = 3) const bool GRID_PLANE = false;
@@ -45,8 +45,8 @@ vec3 blackbody(float t) {
     return textureLod(disk_lut, vec2(clamp(u, 0.0, 1.0), 0.5), 0.0).rgb;
 }
 
-// The image sky's panorama with mips (or the colour table, unused, when the
-// sky is not an image).
+// The image sky's panorama with mips, the catalogue's star grid with mips
+// (src/stars.rs), or the colour table, unused, for the other skies.
 layout(binding = 3) uniform sampler2D sky_tex;
 // The thin disk's tileable noise (src/render/resources.rs, `disk_noise`).
 layout(binding = 4) uniform sampler2D disk_noise;

@@ -25,6 +25,7 @@ pub mod render;
 pub mod scene;
 pub mod shaders;
 pub mod sky;
+pub mod stars;
 pub mod vk;
 
 pub use error::{Error, Result};

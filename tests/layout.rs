@@ -68,6 +68,9 @@ fn raymarch_params_match_the_glsl_block() {
         offset_of!(RaymarchParams, observer),
         offset_of!(RaymarchParams, observer_r),
         offset_of!(RaymarchParams, disk_look),
+        offset_of!(RaymarchParams, sky_m0),
+        offset_of!(RaymarchParams, sky_m1),
+        offset_of!(RaymarchParams, sky_m2),
         offset_of!(RaymarchParams, counts),
         offset_of!(RaymarchParams, holes),
     ];
@@ -155,6 +158,7 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
         ("SKY_CHECKER", f64::from(r::SKY_CHECKER)),
         ("SKY_STARS", f64::from(r::SKY_STARS)),
         ("SKY_IMAGE", f64::from(r::SKY_IMAGE)),
+        ("SKY_CATALOGUE", f64::from(r::SKY_CATALOGUE)),
         ("LUT_MIN_K", r::LUT_MIN_K),
         ("LUT_MAX_K", r::LUT_MAX_K),
     ];

@@ -1,5 +1,6 @@
-//! Image skies: an equirectangular panorama and a cube map, sampled where the
-//! convention says, and clear errors for missing files.
+//! Skies: an equirectangular panorama and a cube map, sampled where the
+//! convention says, and clear errors for missing files; the catalogue sky's
+//! stars where their published coordinates put them.
 
 mod common;
 
@@ -147,4 +148,105 @@ fn a_missing_sky_file_is_named() {
     assert_eq!(code, 2, "{stderr}");
     assert!(stderr.contains("junk.png"), "{stderr}");
     assert!(!out.exists());
+}
+
+/// World direction of galactic longitude `l` and latitude `b` (degrees) in
+/// the catalogue sky's default frame (README, "Scenes": the galactic centre
+/// along +z, the north galactic pole along +y, longitude growing to the
+/// left as seen from inside).
+fn galactic_world(l: f64, b: f64) -> [f64; 3] {
+    let (l, b) = (l.to_radians(), b.to_radians());
+    [-b.cos() * l.sin(), b.sin(), b.cos() * l.cos()]
+}
+
+/// The brightest pixel of a linear HDR render of the catalogue sky from the
+/// origin (gravity off) looking along `look`.
+fn brightest(look: [f64; 3], vfov: f64, w: u32, h: u32) -> (u32, u32) {
+    use blackhole::vk::Validation;
+    use blackhole::{OutputKind, Pixels, Renderer, RendererOptions, Scene};
+    let toml = format!(
+        "[camera]\nposition = [0.0, 0.0, 0.0]\nlook_at = [{}, {}, {}]\nvfov_deg = {vfov}\n\n\
+         [[black_hole]]\nposition = [500.0, 500.0, 500.0]\nrs = 0.01\n\n\
+         [disk]\nkind = \"none\"\n\n[physics]\ngravity = false\n\n\
+         [sky]\nkind = \"catalogue\"\ngalaxy = 0.0\n",
+        look[0], look[1], look[2]
+    );
+    let scene = Scene::from_toml(&toml, "test scene").unwrap();
+    let mut r = Renderer::new(RendererOptions {
+        validation: Validation::Required,
+    })
+    .unwrap();
+    let f = r.render(&scene, w, h, OutputKind::Hdr).unwrap();
+    let Pixels::Rgba32F(px) = f.pixels else {
+        panic!("float pixels")
+    };
+    let mut best = (0, 0, 0.0f32);
+    for y in 0..h {
+        for x in 0..w {
+            let i = (4 * (y * w + x)) as usize;
+            let l = px[i] + px[i + 1] + px[i + 2];
+            if l > best.2 {
+                best = (x, y, l);
+            }
+        }
+    }
+    assert_eq!(r.validation_counts(), (0, 0));
+    r.shutdown().unwrap();
+    (best.0, best.1)
+}
+
+#[test]
+fn sirius_lands_where_its_coordinates_say() {
+    // Sirius: galactic l = 227.230, b = -8.890 (from its ICRS place, not from
+    // the embedded table). Centred in a 2-degree field of 65x65 pixels.
+    let (x, y) = brightest(galactic_world(227.230, -8.890), 2.0, 65, 65);
+    assert!(
+        x.abs_diff(32) <= 1 && y.abs_diff(32) <= 1,
+        "Sirius at ({x},{y})"
+    );
+}
+
+#[test]
+fn the_catalogue_sky_is_not_mirrored() {
+    // A 30-degree field centred 14 degrees right of Sirius along the
+    // galactic plane: Sirius, the brightest star in it, must sit where a
+    // pinhole camera puts it, left of the centre (the sky seen from inside
+    // has east on the left; a mirrored sky would put it right).
+    let (w, h, vfov) = (161u32, 91u32, 30.0f64);
+    let look = galactic_world(213.230, -8.890);
+    let (x, y) = brightest(look, vfov, w, h);
+    let sirius = galactic_world(227.230, -8.890);
+    // The camera's frame (README, "Scenes"): right = up x forward.
+    let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let n = dot(look, look).sqrt();
+    let fwd = look.map(|v| v / n);
+    let up0 = [0.0, 1.0, 0.0];
+    let right = [
+        up0[1] * fwd[2] - up0[2] * fwd[1],
+        up0[2] * fwd[0] - up0[0] * fwd[2],
+        up0[0] * fwd[1] - up0[1] * fwd[0],
+    ];
+    let rn = dot(right, right).sqrt();
+    let right = right.map(|v| v / rn);
+    let up = [
+        fwd[1] * right[2] - fwd[2] * right[1],
+        fwd[2] * right[0] - fwd[0] * right[2],
+        fwd[0] * right[1] - fwd[1] * right[0],
+    ];
+    let f = (f64::from(h) / 2.0) / (vfov.to_radians() / 2.0).tan();
+    let z = dot(sirius, fwd);
+    let want = (
+        f64::from(w) / 2.0 + f * dot(sirius, right) / z,
+        f64::from(h) / 2.0 - f * dot(sirius, up) / z,
+    );
+    assert!(
+        want.0 < f64::from(w) / 2.0 - 20.0,
+        "the prediction is left: {want:?}"
+    );
+    assert!(
+        (f64::from(x) + 0.5 - want.0).abs() <= 2.0 && (f64::from(y) + 0.5 - want.1).abs() <= 2.0,
+        "Sirius at ({x},{y}), expected near ({:.1},{:.1})",
+        want.0,
+        want.1
+    );
 }

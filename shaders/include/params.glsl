@@ -18,6 +18,7 @@
 #define SKY_CHECKER 1
 #define SKY_STARS 2
 #define SKY_IMAGE 3
+#define SKY_CATALOGUE 4
 
 // Observer kinds (observer.w), as src/physics/observer.rs.
 #define OBS_STATIC 0
@@ -49,6 +50,9 @@ layout(std430, binding = 1) readonly buffer RaymarchParams {
     vec4 observer;     // xyz: the camera's velocity in the static frame (world axes); w: observer kind
     vec4 observer_r;   // xyz: unit vector from the reference hole to the camera; w: sqrt(1 - rs/r) (1: flat)
     vec4 disk_look;    // thin disk: x: structure, y: opacity, z: speed (x Keplerian), w: unused
+    vec4 sky_m0;       // catalogue sky: rows of the world-to-galactic matrix (xyz);
+    vec4 sky_m1;       //   sky_m0.w: flux of a magnitude-0 star
+    vec4 sky_m2;
     uvec4 counts;      // x: hole count, y: width, z: height, w: step budget
     vec4 holes[MAX_HOLES]; // xyz: position, w: rs
 } P;

@@ -106,6 +106,53 @@ vec3 sky_stars(vec3 d, float pixel_angle) {
     return (sum + galaxy) * P.sky.z;
 }
 
+// The real sky (src/stars.rs): the Hipparcos stars binned on the faces of a
+// cube in galactic coordinates, one texel per cell (the place of its light
+// in the cell, its flux relative to a magnitude-0 star, its colour
+// temperature), with mips that merge 2x2 cells. The level is the finest
+// whose cells are at least 2.5 times the reach of a star's Gaussian (3
+// sigma, sigma from the pixel's footprint), so the 2x2 cells nearest to d
+// hold every star that can touch it: four fetches whatever the footprint.
+// Stars closer than about one cell at that level (four to eight pixels)
+// blend into one point at their light's centroid, their flux summed. The
+// Milky Way is a faint band along the galactic plane, wider and brighter
+// toward the galactic centre.
+vec3 sky_catalogue(vec3 dw, float pixel_angle) {
+    vec3 d = normalize(vec3(dot(P.sky_m0.xyz, dw), dot(P.sky_m1.xyz, dw), dot(P.sky_m2.xyz, dw)));
+    uint face;
+    vec2 uv;
+    cube_face(d, face, uv);
+    float n0 = P.sky.y;
+    float sigma = max(0.6 * pixel_angle, 2e-5);
+    float reach = 3.0 * sigma;
+    float level = clamp(ceil(log2(reach / (0.4 * 2.0 / n0))), 0.0, 7.0);
+    float n = n0 / exp2(level);
+    vec2 g = (uv * 0.5 + 0.5) * n;
+    vec2 cell = min(floor(g), vec2(n - 1.0));
+    vec2 side = sign(g - cell - 0.5);
+    float flux_sum = 0.0, temp_sum = 0.0;
+    for (int j = 0; j <= 1; ++j) {
+        for (int i = 0; i <= 1; ++i) {
+            vec2 c = clamp(cell + vec2(i, j) * side, vec2(0.0), vec2(n - 1.0));
+            // Clamped at a face's edge: the same cell twice, counted once.
+            if ((i == 1 && c.x == cell.x) || (j == 1 && c.y == cell.y)) continue;
+            vec4 t = texelFetch(sky_tex, ivec2(int(face) * int(n) + int(c.x), int(c.y)), int(level));
+            vec3 s = face_dir(face, ((c + t.xy) / n) * 2.0 - 1.0);
+            vec3 delta = d - s;
+            float w = exp(-0.5 * dot(delta, delta) / (sigma * sigma)) / (6.2831853 * sigma * sigma);
+            flux_sum += t.z * w;
+            temp_sum += t.z * w * t.w;
+        }
+    }
+    vec3 stars = flux_sum > 1e-12 ? blackbody(temp_sum / flux_sum) * (flux_sum * P.sky_m0.w) : vec3(0.0);
+    float cos_l = d.x * inversesqrt(max(dot(d.xy, d.xy), 1e-12));
+    float toward_centre = 0.5 + 0.5 * cos_l;
+    float width = 0.07 + 0.08 * toward_centre * toward_centre;
+    float band = exp(-0.5 * d.z * d.z / (width * width)) * (0.35 + 0.65 * toward_centre * toward_centre);
+    vec3 galaxy = vec3(0.9, 0.85, 0.75) * (P.sky.w * band);
+    return (stars + galaxy) * P.sky.z;
+}
+
 // An equirectangular panorama (src/sky.rs for the convention), sampled with
 // the mip level of the pixel's footprint: its angle over the angle of one
 // panorama texel at the equator (lensing's magnification is not included).
@@ -153,6 +200,7 @@ vec3 sky_color(vec3 d, float pixel_angle) {
     if (kind == SKY_IMAGE) return sky_image(d, pixel_angle);
     if (kind == SKY_CHECKER) return sky_checker(d);
     if (kind == SKY_STARS) return sky_stars(d, pixel_angle);
+    if (kind == SKY_CATALOGUE) return sky_catalogue(d, pixel_angle);
     return vec3(0.0);
 }
 

@@ -435,6 +435,7 @@ fn scene_editor(ui: &mut Ui, s: &mut Scene) {
                 (SkyKind::Checker, "checker"),
                 (SkyKind::Image, "image"),
                 (SkyKind::Cubemap, "cubemap"),
+                (SkyKind::Catalogue, "catalogue"),
                 (SkyKind::Black, "black"),
             ],
         );

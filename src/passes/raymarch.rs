@@ -26,6 +26,7 @@ pub mod glsl {
     pub const SKY_CHECKER: u32 = 1;
     pub const SKY_STARS: u32 = 2;
     pub const SKY_IMAGE: u32 = 3;
+    pub const SKY_CATALOGUE: u32 = 4;
     pub const LUT_MIN_K: f64 = crate::physics::blackbody::LUT_MIN_K;
     pub const LUT_MAX_K: f64 = crate::physics::blackbody::LUT_MAX_K;
 }
@@ -68,6 +69,9 @@ pub struct RaymarchParams {
     pub observer: [f32; 4],
     pub observer_r: [f32; 4],
     pub disk_look: [f32; 4],
+    pub sky_m0: [f32; 4],
+    pub sky_m1: [f32; 4],
+    pub sky_m2: [f32; 4],
     pub counts: [u32; 4],
     pub holes: [[f32; 4]; MAX_HOLES],
 }
@@ -86,6 +90,7 @@ fn sky_kind(scene: &Scene) -> u32 {
         SkyKind::Checker => glsl::SKY_CHECKER,
         SkyKind::Stars => glsl::SKY_STARS,
         SkyKind::Image | SkyKind::Cubemap => glsl::SKY_IMAGE,
+        SkyKind::Catalogue => glsl::SKY_CATALOGUE,
     }
 }
 
@@ -116,10 +121,12 @@ impl RaymarchParams {
             plane_u = glam::DVec3::Z - plane_n * plane_n.z;
         }
         let plane_u = plane_u.normalize();
+        let sky_m = crate::stars::world_to_galactic(scene.sky.frame, scene.sky.rotation_deg);
         let sky_param = match scene.sky.kind {
             SkyKind::Black => 0.0,
             SkyKind::Checker => f64::from(scene.sky.squares),
             SkyKind::Stars => scene.sky.star_density,
+            SkyKind::Catalogue => f64::from(crate::stars::GRID),
             // The image's width (for the mip level) is filled in by the renderer.
             SkyKind::Image | SkyKind::Cubemap => 0.0,
         };
@@ -188,6 +195,9 @@ impl RaymarchParams {
                 d.speed as f32,
                 0.0,
             ],
+            sky_m0: v4(sky_m.row(0), crate::stars::FLUX_MAG0),
+            sky_m1: v4(sky_m.row(1), 0.0),
+            sky_m2: v4(sky_m.row(2), 0.0),
             counts: [
                 scene.black_holes.len().min(MAX_HOLES) as u32,
                 width,

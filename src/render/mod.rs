@@ -18,7 +18,7 @@ pub use slots::{FRAMES_IN_FLIGHT, FrameSlot};
 use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
 use crate::graph::{Graph, ImageHandle};
 use crate::passes::{self, Pipelines, copy, raymarch};
-use crate::scene::{DiskKind, Scene};
+use crate::scene::{DiskKind, Scene, SkyKind};
 use crate::vk::{Access, Buffer, BufferBinding, Gpu, Image, ImageBinding, ImageDesc, Validation};
 use crate::{Error, Result};
 use resources::SceneResources;
@@ -203,7 +203,11 @@ impl Renderer {
         let mut params = raymarch::RaymarchParams::new(scene, size.0, size.1);
         params.cam_up[3] = jitter.0;
         params.cam_fwd[3] = jitter.1;
-        if let Some((_, sky)) = &self.resources.sky {
+        // An image sky's shader needs its panorama's width (the catalogue's
+        // grid size is set by RaymarchParams::new).
+        if let Some((_, sky)) = &self.resources.sky
+            && matches!(scene.sky.kind, SkyKind::Image | SkyKind::Cubemap)
+        {
             params.sky[1] = sky.desc.width as f32;
         }
         self.slots[slot]

@@ -57,17 +57,22 @@ impl SceneResources {
     /// caller must then wait for every frame in flight before
     /// [`SceneResources::ensure_sky`] replaces it).
     pub fn sky_changes(&self, scene: &Scene) -> bool {
-        matches!(scene.sky.kind, SkyKind::Image | SkyKind::Cubemap)
-            && self
-                .sky
-                .as_ref()
-                .is_none_or(|(held, _)| *held != scene.sky.files(&scene.base_dir))
+        matches!(
+            scene.sky.kind,
+            SkyKind::Image | SkyKind::Cubemap | SkyKind::Catalogue
+        ) && self
+            .sky
+            .as_ref()
+            .is_none_or(|(held, _)| *held != sky_sources(scene))
     }
 
     /// Loads and uploads the scene's image sky if it differs from the one held.
     pub fn ensure_sky(&mut self, scene: &Scene) -> Result<()> {
-        let files = scene.sky.files(&scene.base_dir);
-        if !matches!(scene.sky.kind, SkyKind::Image | SkyKind::Cubemap) {
+        let files = sky_sources(scene);
+        if !matches!(
+            scene.sky.kind,
+            SkyKind::Image | SkyKind::Cubemap | SkyKind::Catalogue
+        ) {
             return Ok(());
         }
         if self.sky.as_ref().is_some_and(|(held, _)| *held == files) {
@@ -75,6 +80,15 @@ impl SceneResources {
         }
         let texture = match scene.sky.kind {
             SkyKind::Cubemap => crate::sky::load_cubemap(&files)?,
+            SkyKind::Catalogue => {
+                let stars = crate::stars::parse(crate::stars::HIPPARCOS)?;
+                let n = crate::stars::GRID;
+                crate::sky::SkyTexture {
+                    width: 6 * n,
+                    height: n,
+                    levels: crate::stars::star_grid(&stars),
+                }
+            }
             _ => crate::sky::load_equirect(
                 files
                     .first()
@@ -97,6 +111,15 @@ impl SceneResources {
         )?;
         self.sky = Some((files, image));
         Ok(())
+    }
+}
+
+/// What a scene's sky texture is made from: its image files, or for the
+/// catalogue sky a name standing for the built-in table.
+fn sky_sources(scene: &Scene) -> Vec<PathBuf> {
+    match scene.sky.kind {
+        SkyKind::Catalogue => vec![PathBuf::from("(the built-in Hipparcos table)")],
+        _ => scene.sky.files(&scene.base_dir),
     }
 }
 

@@ -186,6 +186,9 @@ pub enum SkyKind {
     Image,
     /// Six cube-map faces from `cubemap` (+x, -x, +y, -y, +z, -z).
     Cubemap,
+    /// The real stars (Hipparcos, to magnitude 7.5) at their places, with
+    /// the Milky Way's band along the galactic plane (`galaxy`).
+    Catalogue,
     Black,
 }
 
@@ -205,6 +208,11 @@ pub struct Sky {
     pub image: Option<String>,
     /// Six face files, +x, -x, +y, -y, +z, -z, relative to the scene file.
     pub cubemap: Option<Vec<String>>,
+    /// Catalogue sky: which celestial frame the world's axes follow.
+    pub frame: crate::stars::SkyFrame,
+    /// Catalogue sky: turn of the sky about +y, degrees (counter-clockwise
+    /// seen from above).
+    pub rotation_deg: f64,
 }
 
 impl Sky {
@@ -233,6 +241,8 @@ impl Default for Sky {
             brightness: 1.0,
             image: None,
             cubemap: None,
+            frame: crate::stars::SkyFrame::Galactic,
+            rotation_deg: 0.0,
         }
     }
 }
