@@ -113,6 +113,21 @@ pub struct FrameTimings {
     pub wall_ms: f64,
 }
 
+impl FrameTimings {
+    /// Adds `other`'s times to these (the samples of one `--spp` frame):
+    /// passes matched by name, new ones appended; frame and wall times summed.
+    pub fn add(&mut self, other: &FrameTimings) {
+        for p in &other.passes {
+            match self.passes.iter_mut().find(|q| q.name == p.name) {
+                Some(q) => q.ms += p.ms,
+                None => self.passes.push(p.clone()),
+            }
+        }
+        self.frame_ms += other.frame_ms;
+        self.wall_ms += other.wall_ms;
+    }
+}
+
 impl std::fmt::Display for FrameTimings {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let parts: Vec<String> = self

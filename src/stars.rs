@@ -27,10 +27,11 @@ pub const HIPPARCOS: &[u8] = include_bytes!("data/hipparcos.bin");
 pub const GRID: u32 = 256;
 
 /// Flux of a magnitude-0 star in the renderer's units (radiance times
-/// steradians): a magnitude-0 star fills a 1280x720 pixel at about 75, and
-/// the faintest kept (7.5) at about 0.075. The grid stores fluxes relative
+/// steradians): a magnitude-0 star fills a 1280x720 pixel at about 200, and
+/// the faintest kept (7.5) at about 0.2, so against the default disk the
+/// brightest stars bloom and the faint ones are just seen. The grid stores fluxes relative
 /// to it (so they stay normal numbers in half floats); `sky.glsl` multiplies.
-pub const FLUX_MAG0: f64 = 5e-5;
+pub const FLUX_MAG0: f64 = 1.5e-4;
 
 /// One catalogue star.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -122,11 +123,12 @@ pub enum SkyFrame {
 
 /// The matrix taking a world direction to galactic coordinates, for a sky in
 /// `frame` turned by `rotation_deg` about +y (counter-clockwise seen from
-/// above). World axes: +x right, +y up, +z forward of the default camera;
+/// above), then tilted by `tilt_deg` about +z (counter-clockwise as the
+/// default camera sees it). World axes: +x right, +y up, +z forward of the default camera;
 /// seen from inside the celestial sphere facing +z with +y up, the frame's
 /// longitude (or right ascension) grows to the left (east is left on the
 /// sky), so the frame's y axis lies along world -x.
-pub fn world_to_galactic(frame: SkyFrame, rotation_deg: f64) -> DMat3 {
+pub fn world_to_galactic(frame: SkyFrame, rotation_deg: f64, tilt_deg: f64) -> DMat3 {
     // World -> frame: frame x = world z, frame y = -world x, frame z = world y.
     let to_frame = DMat3::from_cols(
         DVec3::new(0.0, -1.0, 0.0),
@@ -135,7 +137,8 @@ pub fn world_to_galactic(frame: SkyFrame, rotation_deg: f64) -> DMat3 {
     );
     // Undo the sky's turn first: a world direction d sees the sky point that
     // sat at R(-angle) d before the turn.
-    let turn = DMat3::from_rotation_y(-rotation_deg.to_radians());
+    let turn = DMat3::from_rotation_y(-rotation_deg.to_radians())
+        * DMat3::from_rotation_z(-tilt_deg.to_radians());
     let frame_to_galactic = match frame {
         SkyFrame::Galactic => DMat3::IDENTITY,
         SkyFrame::Equatorial => {

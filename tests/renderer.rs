@@ -61,3 +61,50 @@ fn zero_sized_or_huge_images_are_usage_errors() {
     assert_eq!(r.validation_counts(), (0, 0));
     r.shutdown().expect("nothing outlives the renderer");
 }
+
+#[test]
+fn spp_averages_jittered_samples_deterministically() {
+    fn ldr(f: &blackhole::Frame) -> &[u8] {
+        match &f.pixels {
+            blackhole::Pixels::Rgba8(p) => p,
+            blackhole::Pixels::Rgba32F(_) => panic!("expected 8-bit pixels"),
+        }
+    }
+    let mut r = renderer();
+    let scene = Scene::builtin_default().unwrap();
+    let (w, h) = (96, 54);
+    let one = r.render_samples(&scene, w, h, OutputKind::Ldr, 1).unwrap();
+    let a = r.render_samples(&scene, w, h, OutputKind::Ldr, 4).unwrap();
+    let b = r.render_samples(&scene, w, h, OutputKind::Ldr, 4).unwrap();
+    // Deterministic: the same offsets every time.
+    assert_eq!(ldr(&a), ldr(&b));
+    // Anti-aliased: edges change, the picture does not.
+    let diff: Vec<u32> = ldr(&a)
+        .iter()
+        .zip(ldr(&one))
+        .map(|(&x, &y)| u32::from(x.abs_diff(y)))
+        .collect();
+    let mean = diff.iter().sum::<u32>() as f64 / diff.len() as f64;
+    assert!(
+        diff.iter().any(|&d| d > 20),
+        "no pixel changed: not jittered"
+    );
+    assert!(
+        mean < 8.0,
+        "mean change {mean:.2} of 255: more than anti-aliasing"
+    );
+    // Four ray marches and accumulations, one bloom and composite.
+    let names: Vec<&str> = a.timings.passes.iter().map(|p| p.name.as_str()).collect();
+    assert!(names.contains(&"accumulate") && names.contains(&"composite"));
+    // The plain EXR of four samples is the mean radiance: close to one
+    // sample's in total.
+    let sum = |f: blackhole::Frame| match f.pixels {
+        blackhole::Pixels::Rgba32F(p) => p.iter().map(|&v| f64::from(v)).sum::<f64>(),
+        blackhole::Pixels::Rgba8(_) => panic!("expected float pixels"),
+    };
+    let hdr1 = sum(r.render_samples(&scene, w, h, OutputKind::Hdr, 1).unwrap());
+    let hdr4 = sum(r.render_samples(&scene, w, h, OutputKind::Hdr, 4).unwrap());
+    assert!((hdr4 / hdr1 - 1.0).abs() < 0.05, "{hdr4} vs {hdr1}");
+    assert_eq!(r.validation_counts(), (0, 0));
+    r.shutdown().expect("nothing outlives the renderer");
+}

@@ -562,14 +562,4 @@ impl Running {
     }
 }
 
-/// The radical inverse of `i` in `base` (Halton sequence), in [0, 1).
-fn halton(mut i: u32, base: u32) -> f64 {
-    let mut f = 1.0;
-    let mut r = 0.0;
-    while i > 0 {
-        f /= f64::from(base);
-        r += f * f64::from(i % base);
-        i /= base;
-    }
-    r
-}
+use crate::render::halton;

@@ -97,6 +97,11 @@ pub enum Command {
         /// map). Without it an EXR is the ray march's radiance as it is.
         #[arg(long)]
         exr_post: bool,
+        /// Jittered samples per pixel (the same sub-pixel offsets every frame,
+        /// so sequences are deterministic), averaged before bloom and the tone
+        /// map: anti-aliased stills and sequences at N times the ray march.
+        #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1024))]
+        spp: u32,
     },
     /// Plot photon paths in the hole's equatorial plane (SVG), with the horizon,
     /// the photon sphere and the ISCO.
@@ -202,7 +207,17 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
             aov,
             frames,
             exr_post,
-        } => render::run(view, out, aov, frames, exr_post),
+            spp,
+        } => render::run(
+            view,
+            out,
+            render::Options {
+                aov,
+                frames,
+                exr_post,
+                spp,
+            },
+        ),
         Command::Trace { scene, out } => trace::run(scene.as_deref(), &out),
         Command::Profile {
             view,

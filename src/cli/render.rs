@@ -8,14 +8,23 @@ use super::{Aov, View, finish, load_scene};
 use crate::output::{self, FileFormat};
 use crate::{Error, Renderer, RendererOptions};
 
+/// What `render` writes besides the view and the file.
+pub struct Options {
+    pub aov: Aov,
+    pub frames: Option<std::ops::Range<u64>>,
+    pub exr_post: bool,
+    /// Jittered samples per pixel.
+    pub spp: u32,
+}
+
 /// Renders what the arguments ask; checks every argument before the GPU.
-pub fn run(
-    view: View,
-    out: PathBuf,
-    aov: Aov,
-    frames: Option<std::ops::Range<u64>>,
-    exr_post: bool,
-) -> Result<ExitCode, Error> {
+pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error> {
+    let Options {
+        aov,
+        frames,
+        exr_post,
+        spp,
+    } = options;
     let View {
         scene,
         width,
@@ -60,7 +69,7 @@ pub fn run(
         );
         for i in range.clone() {
             let path = numbered(&out, i);
-            let frame = renderer.render(&scene.at_frame(i), width, height, kind)?;
+            let frame = renderer.render_samples(&scene.at_frame(i), width, height, kind, spp)?;
             output::write_frame(&frame, &path, format)?;
             bar.set_message(format!("{}", path.display()));
             bar.inc(1);
@@ -76,7 +85,7 @@ pub fn run(
         );
         return finish(renderer);
     }
-    let frame = renderer.render(&scene, width, height, kind)?;
+    let frame = renderer.render_samples(&scene, width, height, kind, spp)?;
     output::write_frame(&frame, &out, format)?;
     log::info!("GPU: {}", frame.timings);
     println!(

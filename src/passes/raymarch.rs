@@ -121,7 +121,11 @@ impl RaymarchParams {
             plane_u = glam::DVec3::Z - plane_n * plane_n.z;
         }
         let plane_u = plane_u.normalize();
-        let sky_m = crate::stars::world_to_galactic(scene.sky.frame, scene.sky.rotation_deg);
+        let sky_m = crate::stars::world_to_galactic(
+            scene.sky.frame,
+            scene.sky.rotation_deg,
+            scene.sky.tilt_deg,
+        );
         let sky_param = match scene.sky.kind {
             SkyKind::Black => 0.0,
             SkyKind::Checker => f64::from(scene.sky.squares),

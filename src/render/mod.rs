@@ -278,6 +278,127 @@ impl Renderer {
         )
     }
 
+    /// Renders `scene` with `spp` jittered samples per pixel (Halton (2, 3)
+    /// offsets, the same for every frame, so sequences are deterministic):
+    /// each sample's ray march is folded into a running mean, and bloom,
+    /// exposure and tone map run once on the mean. `spp` <= 1 is
+    /// [`Renderer::render`]; the geodesic AOV takes one sample (it describes
+    /// rays, not light).
+    pub fn render_samples(
+        &mut self,
+        scene: &Scene,
+        width: u32,
+        height: u32,
+        kind: OutputKind,
+        spp: u32,
+    ) -> Result<Frame> {
+        if spp <= 1 || kind == OutputKind::Geodesic {
+            return self.render(scene, width, height, kind);
+        }
+        self.check_size(width, height)?;
+        self.prepare_scene(scene)?;
+        // The plain EXR is the mean itself: the linear composite with
+        // nothing applied turns it into the same half floats.
+        let mut post_scene;
+        let (scene, output) = if kind == OutputKind::Hdr {
+            post_scene = scene.clone();
+            post_scene.bloom.strength = 0.0;
+            post_scene.post.auto_exposure = false;
+            post_scene.post.exposure_ev = 0.0;
+            post_scene.post.saturation = 1.0;
+            (&post_scene, FrameOutput::HdrPost)
+        } else {
+            (
+                scene,
+                match kind {
+                    OutputKind::HdrPost => FrameOutput::HdrPost,
+                    _ => FrameOutput::Ldr,
+                },
+            )
+        };
+        let fits = self
+            .mean
+            .as_ref()
+            .is_some_and(|(img, _)| (img.desc.width, img.desc.height) == (width, height));
+        if !fits {
+            self.wait_idle()?;
+            self.mean = None;
+            self.mean = Some((
+                Image::new(
+                    &self.gpu,
+                    "accumulated mean",
+                    ImageDesc::new_2d(passes::accumulate::MEAN_FORMAT, width, height),
+                    vk::ImageUsageFlags::STORAGE | vk::ImageUsageFlags::SAMPLED,
+                )?,
+                Access::Nothing,
+            ));
+        }
+        const SLOT: usize = 0;
+        let mut timings = FrameTimings::default();
+        for i in 0..spp {
+            self.slots[SLOT].wait()?;
+            let build = std::time::Instant::now();
+            let jitter = (
+                (halton(i + 1, 2) - 0.5) as f32,
+                (halton(i + 1, 3) - 0.5) as f32,
+            );
+            self.write_params(SLOT, scene, (width, height), jitter)?;
+            let last = i + 1 == spp;
+            let mut g = Graph::new(width, height);
+            let (img, state) = self
+                .mean
+                .as_ref()
+                .ok_or_else(|| Error::Other("accumulation image missing".into()))?;
+            let mut mean = g.import_image(
+                "accumulated mean",
+                img.desc,
+                img.binding(),
+                *state,
+                Some(Access::ComputeSampledRead),
+            );
+            let result = add_scene_frame(
+                &mut g,
+                &self.pipelines,
+                &self.resources,
+                scene,
+                self.slots[SLOT].params.binding(),
+                (width, height),
+                if last { output } else { FrameOutput::Hdr },
+                Some(Accumulation {
+                    mean: &mut mean,
+                    index: i,
+                }),
+            );
+            if let Some((_, state)) = self.mean.as_mut() {
+                *state = Access::ComputeSampledRead;
+            }
+            if !last {
+                self.slots[SLOT].submit(&self.gpu, g, &[], &[])?;
+                if let Some(t) = self.slots[SLOT].wait()? {
+                    timings.add(&t);
+                }
+                continue;
+            }
+            let needed = u64::from(width) * u64::from(height) * kind.texel_bytes();
+            let gpu = self.gpu.clone();
+            let slot = &mut self.slots[SLOT];
+            let readback = slot.ensure_readback(&gpu, needed)?.binding();
+            let mut out_buf = g.import_buffer(
+                "readback",
+                readback,
+                Access::Nothing,
+                Some(Access::HostRead),
+            );
+            copy::add_copy_to_buffer(&mut g, &result, &mut out_buf);
+            let mut frame = finish_offscreen(slot, &gpu, g, (width, height), kind, build)?;
+            timings.add(&frame.timings);
+            timings.cpu = frame.timings.cpu;
+            frame.timings = timings;
+            return Ok(frame);
+        }
+        Err(Error::Other("no samples rendered".into()))
+    }
+
     /// Runs the post-processing part of the recipe (bloom, exposure, tone
     /// map) on an HDR image given as RGBA f32 rows, row 0 at the top; returns
     /// the 8-bit frame.
@@ -582,4 +703,17 @@ fn import_scene_images(
         None => lut.clone(),
     };
     (lut, noise, sky)
+}
+
+/// The radical inverse of `i` in `base` (Halton sequence), in [0, 1): the
+/// sub-pixel offsets of accumulated samples (window and `--spp`).
+pub fn halton(mut i: u32, base: u32) -> f64 {
+    let mut f = 1.0;
+    let mut r = 0.0;
+    while i > 0 {
+        f /= f64::from(base);
+        r += f * f64::from(i % base);
+        i /= base;
+    }
+    r
 }

@@ -54,7 +54,7 @@ pub struct PostSettings<'s> {
 
 /// Adds the whole frame to `graph`; returns the image it ends in (at the
 /// graph's output size, except `Hdr` and `Geodesic`, which keep the ray
-/// march's size).
+/// march's size; `Hdr` with accumulation returns the running mean).
 pub fn add_frame<'a>(
     graph: &mut Graph<'a>,
     pipelines: &'a Pipelines,
@@ -90,7 +90,7 @@ pub fn add_frame<'a>(
         ),
         HdrSource::Image(image) => image.clone(),
     };
-    if matches!(output, FrameOutput::Hdr | FrameOutput::Geodesic) {
+    if output == FrameOutput::Geodesic {
         return hdr;
     }
     let hdr = match accumulation {
@@ -100,6 +100,10 @@ pub fn add_frame<'a>(
         }
         None => hdr,
     };
+    if output == FrameOutput::Hdr {
+        // The ray march's radiance, or with accumulation the running mean.
+        return hdr;
+    }
     let bloom = passes::bloom::add_bloom(graph, pipelines, &hdr, settings.bloom);
     let exposure = passes::exposure::add_exposure(graph, pipelines, &hdr, settings.post);
     composite::add_composite(

@@ -213,6 +213,8 @@ pub struct Sky {
     /// Catalogue sky: turn of the sky about +y, degrees (counter-clockwise
     /// seen from above).
     pub rotation_deg: f64,
+    /// Catalogue sky: then its tilt about +z, degrees.
+    pub tilt_deg: f64,
 }
 
 impl Sky {
@@ -234,7 +236,7 @@ impl Sky {
 impl Default for Sky {
     fn default() -> Self {
         Sky {
-            kind: SkyKind::Stars,
+            kind: SkyKind::Catalogue,
             squares: 24,
             star_density: 0.5,
             galaxy: 0.02,
@@ -242,7 +244,8 @@ impl Default for Sky {
             image: None,
             cubemap: None,
             frame: crate::stars::SkyFrame::Galactic,
-            rotation_deg: 0.0,
+            rotation_deg: 20.0,
+            tilt_deg: 35.0,
         }
     }
 }

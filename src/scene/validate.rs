@@ -217,6 +217,7 @@ impl Scene {
             "needs sky.cubemap = [six files: +x, -x, +y, -y, +z, -z]",
         )?;
         finite(&key("rotation_deg"), s.rotation_deg)?;
+        finite(&key("tilt_deg"), s.tilt_deg)?;
         rule(
             s.star_density.is_finite() && (0.0..=1.0).contains(&s.star_density),
             &key("star_density"),
