@@ -151,9 +151,9 @@ fn a_missing_sky_file_is_named() {
 }
 
 /// World direction of galactic longitude `l` and latitude `b` (degrees) in
-/// the catalogue sky's default frame (README, "Scenes": the galactic centre
-/// along +z, the north galactic pole along +y, longitude growing to the
-/// left as seen from inside).
+/// the catalogue sky's galactic frame, not turned (README, "Scenes": the
+/// galactic centre along +z, the north galactic pole along +y, longitude
+/// growing to the left as seen from inside).
 fn galactic_world(l: f64, b: f64) -> [f64; 3] {
     let (l, b) = (l.to_radians(), b.to_radians());
     [-b.cos() * l.sin(), b.sin(), b.cos() * l.cos()]
@@ -168,7 +168,7 @@ fn brightest(look: [f64; 3], vfov: f64, w: u32, h: u32) -> (u32, u32) {
         "[camera]\nposition = [0.0, 0.0, 0.0]\nlook_at = [{}, {}, {}]\nvfov_deg = {vfov}\n\n\
          [[black_hole]]\nposition = [500.0, 500.0, 500.0]\nrs = 0.01\n\n\
          [disk]\nkind = \"none\"\n\n[physics]\ngravity = false\n\n\
-         [sky]\nkind = \"catalogue\"\ngalaxy = 0.0\n",
+         [sky]\nkind = \"catalogue\"\nframe = \"galactic\"\nrotation_deg = 0.0\ntilt_deg = 0.0\ngalaxy = 0.0\n",
         look[0], look[1], look[2]
     );
     let scene = Scene::from_toml(&toml, "test scene").unwrap();
