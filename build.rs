@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 /// Extra builds of a shader with preprocessor macros: (source, output stem, defines).
 const VARIANTS: &[(&str, &str, &[&str])] = &[
     ("raymarch.comp", "raymarch_aov.comp", &["GEODESIC_AOV"]),
+    ("raymarch.comp", "raymarch_no_quad.comp", &["NO_QUAD"]),
     ("composite.comp", "composite_hdr.comp", &["HDR_OUTPUT"]),
 ];
 

@@ -5,6 +5,12 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
+#if !defined(GEODESIC_AOV) && !defined(NO_QUAD)
+// Ray differentials from 2x2 quads of pixels (see main).
+#extension GL_KHR_shader_subgroup_quad : require
+#define RAY_DIFFERENTIALS
+#endif
+
 // Specialization constants (src/passes/raymarch.rs, `Variant`): code a
 // scene does not use is compiled out of its pipeline. On a CPU driver such as
 // lavapipe every branch runs under a mask for every pixel, taken or not, so
@@ -492,9 +498,23 @@ Hit trace(vec3 x, vec3 v) {
 }
 
 void main() {
-    uvec2 px = gl_GlobalInvocationID.xy;
     uint w = P.counts.y, hgt = P.counts.z;
+#ifdef RAY_DIFFERENTIALS
+    // The 64 invocations of a group cover its 8x8 tile in 2x2 quads
+    // (subgroup quads are four consecutive invocations), so each pixel can
+    // read its right or left and its lower or upper neighbour's final
+    // direction. Lanes past the image's edge trace a clamped pixel for their
+    // quad and store nothing.
+    uint li = gl_LocalInvocationIndex;
+    uint quad = li >> 2u;
+    uvec2 in_quad = uvec2(li & 1u, (li >> 1u) & 1u);
+    uvec2 px_raw = gl_WorkGroupID.xy * 8u + 2u * uvec2(quad & 3u, quad >> 2u) + in_quad;
+    bool inside = px_raw.x < w && px_raw.y < hgt;
+    uvec2 px = min(px_raw, uvec2(w - 1u, hgt - 1u));
+#else
+    uvec2 px = gl_GlobalInvocationID.xy;
     if (px.x >= w || px.y >= hgt) return;
+#endif
 
     // Binding camera convention (the conventions in the README, "Physics").
     float tan_half = P.cam_pos.w, aspect = P.cam_right.w;
@@ -542,9 +562,35 @@ void main() {
     imageStore(out_img, ivec2(px), aov);
 #else
     vec3 color = vec3(0.0);
+    float pixel_angle = 2.0 * tan_half / float(hgt);
+    // The pixel's footprint on the sky: the change of the final direction
+    // from one pixel to the next, across and down. Unlensed, pixel_angle in
+    // two directions at right angles to it.
+    vec3 t1 = normalize(cross(hit.dir, abs(hit.dir.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+    Footprint fp = Footprint(pixel_angle * t1, pixel_angle * cross(hit.dir, t1));
+#ifdef RAY_DIFFERENTIALS
+    // Lensed: from the quad's neighbours (one-sided differences), where the
+    // neighbour escaped too and its direction is near (not across the
+    // shadow's edge or the photon ring's discontinuities).
+    bool escaped = hit.outcome == OUT_ESCAPED;
+    vec3 dh = subgroupQuadSwapHorizontal(hit.dir);
+    vec3 dv = subgroupQuadSwapVertical(hit.dir);
+    bool eh = subgroupQuadSwapHorizontal(escaped);
+    bool ev = subgroupQuadSwapVertical(escaped);
+    vec3 ax = (dh - hit.dir) * (in_quad.x == 0u ? 1.0 : -1.0);
+    vec3 ay = (dv - hit.dir) * (in_quad.y == 0u ? 1.0 : -1.0);
+    const float NEAR = 0.3;
+    bool okx = eh && dot(ax, ax) < NEAR * NEAR, oky = ev && dot(ay, ay) < NEAR * NEAR;
+    if (okx && oky) {
+        fp = Footprint(ax, ay);
+    } else if (okx) {
+        fp = Footprint(ax, pixel_angle * normalize(cross(hit.dir, ax + 1e-12 * t1)));
+    } else if (oky) {
+        fp = Footprint(pixel_angle * normalize(cross(ay + 1e-12 * t1, hit.dir)), ay);
+    }
+#endif
     if (hit.outcome == OUT_ESCAPED) {
-        float pixel_angle = 2.0 * tan_half / float(hgt);
-        color = sky_color(hit.dir, pixel_angle);
+        color = sky_color(hit.dir, fp);
         grid_plane(hit.pos, hit.dir, pixel_angle, color);
     }
     else if (!ONE_HOLE && hit.outcome == OUT_DISK) {
@@ -555,6 +601,9 @@ void main() {
         color = dens * disk_color(r, hit.g);
     }
     color = hit.glow + hit.trans * color;
+#ifdef RAY_DIFFERENTIALS
+    if (!inside) return;
+#endif
     imageStore(out_img, ivec2(px), vec4(color, 1.0));
 #endif
 }

@@ -4,6 +4,10 @@
 pub const RAYMARCH: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/raymarch.comp.spv"));
 /// The composite (`shaders/composite.comp`).
 pub const COMPOSITE: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/composite.comp.spv"));
+/// The ray march without subgroup quads (unlensed star footprints), for
+/// devices that lack quad operations in compute shaders.
+pub const RAYMARCH_NO_QUAD: &[u8] =
+    include_bytes!(concat!(env!("OUT_DIR"), "/raymarch_no_quad.comp.spv"));
 /// The ray march writing the geodesic AOV (`raymarch.comp` with `GEODESIC_AOV`).
 pub const RAYMARCH_AOV: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/raymarch_aov.comp.spv"));
 /// Bloom bright pass to a quarter of the size (`shaders/bloom_prefilter.comp`).

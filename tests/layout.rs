@@ -77,6 +77,7 @@ fn raymarch_params_match_the_glsl_block() {
     for spirv in [
         blackhole::shaders::RAYMARCH,
         blackhole::shaders::RAYMARCH_AOV,
+        blackhole::shaders::RAYMARCH_NO_QUAD,
     ] {
         let glsl = member_offsets(spirv, "RaymarchParams");
         let rust: Vec<u32> = rust.iter().map(|&o| o as u32).collect();

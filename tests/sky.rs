@@ -250,3 +250,110 @@ fn the_catalogue_sky_is_not_mirrored() {
         want.1
     );
 }
+
+/// Linear HDR render of the catalogue sky (no Milky Way) from the origin
+/// looking at `look`, with one hole of rs = 1 at `hole` (gravity on) or
+/// straight rays (gravity off).
+fn render_hdr(look: [f64; 3], hole: [f64; 3], gravity: bool, vfov: f64, n: u32) -> Vec<f32> {
+    use blackhole::vk::Validation;
+    use blackhole::{OutputKind, Pixels, Renderer, RendererOptions, Scene};
+    let toml = format!(
+        "[camera]\nposition = [0.0, 0.0, 0.0]\nlook_at = [{}, {}, {}]\nvfov_deg = {vfov}\n\n\
+         [[black_hole]]\nposition = [{}, {}, {}]\nrs = 1.0\n\n\
+         [disk]\nkind = \"none\"\n\n[physics]\ngravity = {gravity}\n\n\
+         [sky]\nkind = \"catalogue\"\nrotation_deg = 0.0\ntilt_deg = 0.0\ngalaxy = 0.0\n",
+        look[0], look[1], look[2], hole[0], hole[1], hole[2]
+    );
+    let scene = Scene::from_toml(&toml, "test scene").unwrap();
+    let mut r = Renderer::new(RendererOptions {
+        validation: Validation::Required,
+    })
+    .unwrap();
+    let f = r.render(&scene, n, n, OutputKind::Hdr).unwrap();
+    assert_eq!(r.validation_counts(), (0, 0));
+    r.shutdown().unwrap();
+    match f.pixels {
+        Pixels::Rgba32F(p) => p,
+        Pixels::Rgba8(_) => panic!("float pixels"),
+    }
+}
+
+#[test]
+fn a_lensed_star_brightens_by_the_point_lens_magnification() {
+    // Sirius behind a hole 10^4 rs away, offset from it by one Einstein
+    // radius (theta_E^2 = 2 rs / D for a source at infinity): a weak-field
+    // point lens with u = 1 shows two images, at 1.618 and 0.618 theta_E on
+    // either side, whose fluxes add to (u^2 + 2) / (u sqrt(u^2 + 4)) = 1.342
+    // times the star's (strong-field corrections here are about 1 %). Every
+    // image is drawn from the ray differentials of its pixels: nothing in
+    // the renderer knows the formula.
+    let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let cross = |a: [f64; 3], b: [f64; 3]| {
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    };
+    let unit = |a: [f64; 3]| {
+        let n = dot(a, a).sqrt();
+        a.map(|v| v / n)
+    };
+    let d = 1.0e4;
+    let theta_e = (2.0 / d).sqrt();
+    let s = galactic_world(227.230, -8.890);
+    let k = unit(cross(s, [0.0, 1.0, 0.0]));
+    let h = unit([0, 1, 2].map(|i| theta_e.cos() * s[i] + theta_e.sin() * k[i]));
+    let hole = h.map(|v| v * d);
+    let (n, vfov) = (300u32, 4.0f64);
+    // Where a pinhole camera looking along h puts a direction.
+    let right = unit(cross([0.0, 1.0, 0.0], h));
+    let up = cross(h, right);
+    let f = (f64::from(n) / 2.0) / (vfov.to_radians() / 2.0).tan();
+    let pixel = |v: [f64; 3]| {
+        let z = dot(v, h);
+        (
+            f64::from(n) / 2.0 + f * dot(v, right) / z,
+            f64::from(n) / 2.0 - f * dot(v, up) / z,
+        )
+    };
+    // Light within 5 pixels of a point.
+    let aperture = |img: &[f32], (cx, cy): (f64, f64)| {
+        let mut sum = 0.0;
+        for y in 0..n {
+            for x in 0..n {
+                let (dx, dy) = (f64::from(x) + 0.5 - cx, f64::from(y) + 0.5 - cy);
+                if dx * dx + dy * dy <= 25.0 {
+                    let i = (4 * (y * n + x)) as usize;
+                    sum += f64::from(img[i] + img[i + 1] + img[i + 2]);
+                }
+            }
+        }
+        sum
+    };
+    let plain = render_hdr(h, hole, false, vfov, n);
+    let unlensed = aperture(&plain, pixel(s));
+    assert!(unlensed > 0.0, "Sirius is in the unlensed view");
+    let lensed_img = render_hdr(h, hole, true, vfov, n);
+    let at = |theta: f64| {
+        pixel(unit(
+            [0, 1, 2].map(|i| theta.cos() * h[i] + theta.sin() * k[i]),
+        ))
+    };
+    let phi = 1.618_034 * theta_e;
+    let (primary, secondary) = (
+        aperture(&lensed_img, at(-phi)),
+        aperture(&lensed_img, at(0.618_034 * theta_e)),
+    );
+    let mu = (primary + secondary) / unlensed;
+    println!(
+        "lensed Sirius: images {:.4} + {:.4} of the unlensed flux, total {mu:.4} (point lens: 1.1708 + 0.1708 = 1.3416)",
+        primary / unlensed,
+        secondary / unlensed
+    );
+    assert!((mu / 1.3416 - 1.0).abs() < 0.05, "total magnification {mu}");
+    assert!(
+        (secondary / unlensed / 0.1708 - 1.0).abs() < 0.15,
+        "secondary image"
+    );
+}

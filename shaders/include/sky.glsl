@@ -3,6 +3,21 @@
 #ifndef SKY_GLSL
 #define SKY_GLSL
 
+// A pixel's footprint on the sky: the change of the ray's final direction
+// from this pixel to the next one across (x) and down (y), in radians (the
+// ray differentials; unlensed, the pixel's angular size in two directions
+// at right angles).
+struct Footprint {
+    vec3 x;
+    vec3 y;
+};
+
+// The footprint's largest extent, radians per pixel.
+float footprint_size(Footprint f) {
+    float a = dot(f.x, f.x), b = dot(f.x, f.y), c = dot(f.y, f.y);
+    return sqrt(0.5 * (a + c) + sqrt(0.25 * (a - c) * (a - c) + b * b));
+}
+
 // PCG-style 3 -> 3 integer hash (Jarzynski & Olano, "Hash Functions for GPU
 // Rendering", JCGT 2020), as floats in [0, 1).
 vec3 hash33(uvec3 v) {
@@ -109,22 +124,38 @@ vec3 sky_stars(vec3 d, float pixel_angle) {
 // The real sky (src/stars.rs): the Hipparcos stars binned on the faces of a
 // cube in galactic coordinates, one texel per cell (the place of its light
 // in the cell, its flux relative to a magnitude-0 star, its colour
-// temperature), with mips that merge 2x2 cells. The level is the finest
-// whose cells are at least 2.5 times the reach of a star's Gaussian (3
-// sigma, sigma from the pixel's footprint), so the 2x2 cells nearest to d
-// hold every star that can touch it: four fetches whatever the footprint.
-// Stars closer than about one cell at that level (four to eight pixels)
-// blend into one point at their light's centroid, their flux summed. The
-// Milky Way is a faint band along the galactic plane, wider and brighter
+// temperature), with mips that merge 2x2 cells.
+//
+// Each star is drawn where the lensing puts it and as the lensing shapes
+// it: the pixel's footprint (the ray differentials A = [f.x f.y], the final
+// direction's change per pixel) maps a star's offset on the sky, delta, to
+// an offset in pixels, p = (A^T A)^-1 A^T delta, and the star is a Gaussian
+// of sigma 0.6 pixel there, divided by the pixel's solid angle sqrt(det A^T
+// A). So a star keeps its flux at any resolution, and near the hole its
+// images stretch along the lensed arcs and brighten by the magnification
+// (tests/sky.rs checks the point-lens magnification).
+//
+// The level is the finest whose cells are at least 2.5 times the reach of
+// that Gaussian along the footprint's longest axis, so the 2x2 cells
+// nearest to d hold every star that can touch it: four fetches whatever the
+// footprint. Stars closer than about one cell at that level (four to eight
+// pixels) blend into one point at their light's centroid, their flux summed.
+// The Milky Way is a faint band along the galactic plane, wider and brighter
 // toward the galactic centre.
-vec3 sky_catalogue(vec3 dw, float pixel_angle) {
-    vec3 d = normalize(vec3(dot(P.sky_m0.xyz, dw), dot(P.sky_m1.xyz, dw), dot(P.sky_m2.xyz, dw)));
+vec3 sky_catalogue(vec3 dw, Footprint f) {
+    mat3 m = transpose(mat3(P.sky_m0.xyz, P.sky_m1.xyz, P.sky_m2.xyz));
+    vec3 d = normalize(m * dw);
+    vec3 ax = m * f.x, ay = m * f.y;
+    float m11 = dot(ax, ax), m12 = dot(ax, ay), m22 = dot(ay, ay);
+    float det = max(m11 * m22 - m12 * m12, 1e-30);
+    float area = sqrt(det);                 // solid angle of a pixel
+    float size = footprint_size(Footprint(ax, ay));
     uint face;
     vec2 uv;
     cube_face(d, face, uv);
     float n0 = P.sky.y;
-    float sigma = max(0.6 * pixel_angle, 2e-5);
-    float reach = 3.0 * sigma;
+    const float SIGMA = 0.6;                // pixels
+    float reach = 3.0 * SIGMA * max(size, 1e-7);
     float level = clamp(ceil(log2(reach / (0.4 * 2.0 / n0))), 0.0, 7.0);
     float n = n0 / exp2(level);
     vec2 g = (uv * 0.5 + 0.5) * n;
@@ -137,9 +168,10 @@ vec3 sky_catalogue(vec3 dw, float pixel_angle) {
             // Clamped at a face's edge: the same cell twice, counted once.
             if ((i == 1 && c.x == cell.x) || (j == 1 && c.y == cell.y)) continue;
             vec4 t = texelFetch(sky_tex, ivec2(int(face) * int(n) + int(c.x), int(c.y)), int(level));
-            vec3 s = face_dir(face, ((c + t.xy) / n) * 2.0 - 1.0);
-            vec3 delta = d - s;
-            float w = exp(-0.5 * dot(delta, delta) / (sigma * sigma)) / (6.2831853 * sigma * sigma);
+            vec3 delta = face_dir(face, ((c + t.xy) / n) * 2.0 - 1.0) - d;
+            float b1 = dot(ax, delta), b2 = dot(ay, delta);
+            vec2 p = vec2(m22 * b1 - m12 * b2, m11 * b2 - m12 * b1) / det;
+            float w = exp(-0.5 * dot(p, p) / (SIGMA * SIGMA)) / (6.2831853 * SIGMA * SIGMA * area);
             flux_sum += t.z * w;
             temp_sum += t.z * w * t.w;
         }
@@ -154,8 +186,8 @@ vec3 sky_catalogue(vec3 dw, float pixel_angle) {
 }
 
 // An equirectangular panorama (src/sky.rs for the convention), sampled with
-// the mip level of the pixel's footprint: its angle over the angle of one
-// panorama texel at the equator (lensing's magnification is not included).
+// the mip level of the pixel's footprint (its longest axis, lensing
+// included) over the angle of one panorama texel at the equator.
 vec3 sky_image(vec3 d, float pixel_angle) {
     float u = 0.5 + atan(d.z, d.x) * (1.0 / 6.2831853);
     float v = acos(clamp(d.y, -1.0, 1.0)) * (1.0 / 3.14159265);
@@ -195,12 +227,13 @@ void grid_plane(vec3 p, vec3 d, float pixel_angle, inout vec3 color) {
     color = mix(base, vec3(0.9, 0.75, 0.35), line);
 }
 
-vec3 sky_color(vec3 d, float pixel_angle) {
+// The sky seen by an escaped ray whose pixel covers footprint f.
+vec3 sky_color(vec3 d, Footprint f) {
     const int kind = SKY_KIND;
-    if (kind == SKY_IMAGE) return sky_image(d, pixel_angle);
+    if (kind == SKY_IMAGE) return sky_image(d, footprint_size(f));
     if (kind == SKY_CHECKER) return sky_checker(d);
-    if (kind == SKY_STARS) return sky_stars(d, pixel_angle);
-    if (kind == SKY_CATALOGUE) return sky_catalogue(d, pixel_angle);
+    if (kind == SKY_STARS) return sky_stars(d, footprint_size(f));
+    if (kind == SKY_CATALOGUE) return sky_catalogue(d, f);
     return vec3(0.0);
 }
 

@@ -12,7 +12,7 @@ pub mod raymarch;
 use std::sync::Arc;
 
 use crate::Result;
-use crate::shaders::{RAYMARCH, RAYMARCH_AOV};
+use crate::shaders::{RAYMARCH, RAYMARCH_AOV, RAYMARCH_NO_QUAD};
 use crate::vk::{BindingKind, ComputePipeline, Gpu, Sampler};
 
 /// The parameter block is a read-only storage buffer, not a uniform buffer:
@@ -129,7 +129,13 @@ impl Pipelines {
     /// not taken costs as much as one taken.
     pub fn raymarch(&self, variant: raymarch::Variant) -> Result<Arc<ComputePipeline>> {
         self.raymarch.get(variant, || {
-            let spirv = if variant.aov { RAYMARCH_AOV } else { RAYMARCH };
+            let spirv = if variant.aov {
+                RAYMARCH_AOV
+            } else if self.gpu.info.quad_compute {
+                RAYMARCH
+            } else {
+                RAYMARCH_NO_QUAD
+            };
             ComputePipeline::with_constants(
                 &self.gpu,
                 &variant.name(),

@@ -28,6 +28,9 @@ pub struct DeviceInfo {
     /// Valid bits of timestamps on the compute queue (0: no timestamps).
     pub timestamp_valid_bits: u32,
     pub max_push_constants: u32,
+    /// Subgroup quad operations in compute shaders (the ray march's ray
+    /// differentials need them; without, stars keep the unlensed footprint).
+    pub quad_compute: bool,
 }
 
 /// The logical device and everything created with it once.
@@ -68,6 +71,7 @@ struct Candidate {
     queue_family: u32,
     timestamp_valid_bits: u32,
     props: vk::PhysicalDeviceProperties,
+    quad_compute: bool,
     /// Why it cannot be used, if it cannot.
     unusable: Option<String>,
 }
@@ -213,6 +217,7 @@ impl Gpu {
                 timestamp_period: chosen.props.limits.timestamp_period,
                 timestamp_valid_bits: chosen.timestamp_valid_bits,
                 max_push_constants: chosen.props.limits.max_push_constants_size,
+                quad_compute: chosen.quad_compute,
             },
             push_descriptor,
             debug_utils,
@@ -256,6 +261,21 @@ impl Gpu {
                 }
             });
         let api = props.api_version;
+        let mut subgroup = vk::PhysicalDeviceSubgroupProperties::default();
+        {
+            let mut props2 = vk::PhysicalDeviceProperties2::default().push_next(&mut subgroup);
+            // SAFETY: as above; Vulkan 1.1 core (devices below 1.2 are refused).
+            unsafe { inst.get_physical_device_properties2(pd, &mut props2) };
+        }
+        // BLACKHOLE_NO_QUAD=1 takes the fall-back shader (for comparisons).
+        let quad_compute = std::env::var_os("BLACKHOLE_NO_QUAD").is_none()
+            && api >= vk::API_VERSION_1_1
+            && subgroup
+                .supported_stages
+                .contains(vk::ShaderStageFlags::COMPUTE)
+            && subgroup
+                .supported_operations
+                .contains(vk::SubgroupFeatureFlags::QUAD);
         let unusable = if api < vk::API_VERSION_1_2 {
             Some("Vulkan 1.2 or newer is needed".to_string())
         } else if api < vk::API_VERSION_1_3 && !has(khr::synchronization2::NAME) {
@@ -284,6 +304,7 @@ impl Gpu {
                 .get(queue_family)
                 .map_or(0, |f| f.timestamp_valid_bits),
             props,
+            quad_compute,
             unusable,
         })
     }
