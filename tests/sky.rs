@@ -299,7 +299,7 @@ fn a_lensed_star_brightens_by_the_point_lens_magnification() {
         let n = dot(a, a).sqrt();
         a.map(|v| v / n)
     };
-    let d = 1.0e4;
+    let d: f64 = 1.0e4;
     let theta_e = (2.0 / d).sqrt();
     let s = galactic_world(227.230, -8.890);
     let k = unit(cross(s, [0.0, 1.0, 0.0]));
