@@ -579,8 +579,12 @@ void main() {
     bool ev = subgroupQuadSwapVertical(escaped);
     vec3 ax = (dh - hit.dir) * (in_quad.x == 0u ? 1.0 : -1.0);
     vec3 ay = (dv - hit.dir) * (in_quad.y == 0u ? 1.0 : -1.0);
+    // Past the image's edge a neighbour is the clamped pixel itself (no
+    // difference): not a footprint either.
     const float NEAR = 0.3;
-    bool okx = eh && dot(ax, ax) < NEAR * NEAR, oky = ev && dot(ay, ay) < NEAR * NEAR;
+    float tiny = 1e-3 * pixel_angle;
+    float lx = length(ax), ly = length(ay);
+    bool okx = eh && lx < NEAR && lx > tiny, oky = ev && ly < NEAR && ly > tiny;
     if (okx && oky) {
         fp = Footprint(ax, ay);
     } else if (okx) {
