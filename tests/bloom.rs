@@ -3,22 +3,10 @@
 //! spread of a single bright spot.
 
 use blackhole::scene::{Bloom, Post, Tonemap};
-use blackhole::vk::Validation;
-use blackhole::{OutputKind, Pixels, Renderer, RendererOptions, Scene};
+mod common;
 
-fn renderer() -> Renderer {
-    Renderer::new(RendererOptions {
-        validation: Validation::Required,
-    })
-    .expect("a Vulkan device with the validation layer")
-}
-
-fn rgba8(f: blackhole::Frame) -> Vec<u8> {
-    match f.pixels {
-        Pixels::Rgba8(p) => p,
-        Pixels::Rgba32F(_) => panic!("expected 8-bit pixels"),
-    }
-}
+use blackhole::{OutputKind, Scene};
+use common::{renderer, rgba8};
 
 #[test]
 fn every_level_is_its_own_timed_pass() {

@@ -4,22 +4,10 @@
 //! and the automatic exposure meters the light, not the black.
 
 use blackhole::scene::{Bloom, Post, Tonemap};
-use blackhole::vk::Validation;
-use blackhole::{OutputKind, Pixels, Renderer, RendererOptions, Scene};
+mod common;
 
-fn renderer() -> Renderer {
-    Renderer::new(RendererOptions {
-        validation: Validation::Required,
-    })
-    .expect("a Vulkan device with the validation layer")
-}
-
-fn rgba8(f: blackhole::Frame) -> Vec<u8> {
-    match f.pixels {
-        Pixels::Rgba8(p) => p,
-        Pixels::Rgba32F(_) => panic!("expected 8-bit pixels"),
-    }
-}
+use blackhole::{OutputKind, Pixels, Renderer, Scene};
+use common::{renderer, rgba8};
 
 fn rgba32(f: blackhole::Frame) -> Vec<f32> {
     match f.pixels {

@@ -316,23 +316,7 @@ impl Renderer {
                 },
             )
         };
-        let fits = self
-            .mean
-            .as_ref()
-            .is_some_and(|(img, _)| (img.desc.width, img.desc.height) == (width, height));
-        if !fits {
-            self.wait_idle()?;
-            self.mean = None;
-            self.mean = Some((
-                Image::new(
-                    &self.gpu,
-                    "accumulated mean",
-                    ImageDesc::new_2d(passes::accumulate::MEAN_FORMAT, width, height),
-                    vk::ImageUsageFlags::STORAGE | vk::ImageUsageFlags::SAMPLED,
-                )?,
-                Access::Nothing,
-            ));
-        }
+        self.ensure_mean((width, height))?;
         const SLOT: usize = 0;
         let mut timings = FrameTimings::default();
         for i in 0..spp {
@@ -345,17 +329,9 @@ impl Renderer {
             self.write_params(SLOT, scene, (width, height), jitter)?;
             let last = i + 1 == spp;
             let mut g = Graph::new(width, height);
-            let (img, state) = self
-                .mean
-                .as_ref()
+            let mut mean = self
+                .import_mean(&mut g)
                 .ok_or_else(|| Error::Other("accumulation image missing".into()))?;
-            let mut mean = g.import_image(
-                "accumulated mean",
-                img.desc,
-                img.binding(),
-                *state,
-                Some(Access::ComputeSampledRead),
-            );
             let result = add_scene_frame(
                 &mut g,
                 &self.pipelines,
@@ -397,6 +373,44 @@ impl Renderer {
             return Ok(frame);
         }
         Err(Error::Other("no samples rendered".into()))
+    }
+
+    /// Makes sure the accumulation image matches `size` (a new one, after
+    /// the GPU is idle, if not); true when it was made anew.
+    fn ensure_mean(&mut self, (w, h): (u32, u32)) -> Result<bool> {
+        let fits = self
+            .mean
+            .as_ref()
+            .is_some_and(|(img, _)| (img.desc.width, img.desc.height) == (w, h));
+        if fits {
+            return Ok(false);
+        }
+        self.wait_idle()?;
+        self.mean = None;
+        self.mean = Some((
+            Image::new(
+                &self.gpu,
+                "accumulated mean",
+                ImageDesc::new_2d(passes::accumulate::MEAN_FORMAT, w, h),
+                vk::ImageUsageFlags::STORAGE | vk::ImageUsageFlags::SAMPLED,
+            )?,
+            Access::Nothing,
+        ));
+        Ok(true)
+    }
+
+    /// Imports the accumulation image in its current state; the graph
+    /// leaves it ready to be sampled.
+    fn import_mean(&self, g: &mut Graph<'_>) -> Option<ImageHandle> {
+        self.mean.as_ref().map(|(img, state)| {
+            g.import_image(
+                "accumulated mean",
+                img.desc,
+                img.binding(),
+                *state,
+                Some(Access::ComputeSampledRead),
+            )
+        })
     }
 
     /// Runs the post-processing part of the recipe (bloom, exposure, tone
@@ -498,38 +512,17 @@ impl Renderer {
 
         // The running mean follows the render size; a new one starts over.
         let mut sample = view.sample;
-        if let Some(s) = sample.as_mut() {
-            let fits = self
-                .mean
-                .as_ref()
-                .is_some_and(|(img, _)| (img.desc.width, img.desc.height) == (w, h));
-            if !fits {
-                self.wait_idle()?;
-                self.mean = None;
-                self.mean = Some((
-                    Image::new(
-                        &self.gpu,
-                        "accumulated mean",
-                        ImageDesc::new_2d(passes::accumulate::MEAN_FORMAT, w, h),
-                        vk::ImageUsageFlags::STORAGE | vk::ImageUsageFlags::SAMPLED,
-                    )?,
-                    Access::Nothing,
-                ));
-                *s = 0;
-            }
+        if let Some(s) = sample.as_mut()
+            && self.ensure_mean((w, h))?
+        {
+            *s = 0;
         }
 
         let (out_w, out_h) = (target.desc.width, target.desc.height);
         let mut g = Graph::new(out_w, out_h);
-        let mut mean_handle = match (&self.mean, sample) {
-            (Some((img, state)), Some(_)) => Some(g.import_image(
-                "accumulated mean",
-                img.desc,
-                img.binding(),
-                *state,
-                Some(Access::ComputeSampledRead),
-            )),
-            _ => None,
+        let mut mean_handle = match sample {
+            Some(_) => self.import_mean(&mut g),
+            None => None,
         };
         let accumulation = match (mean_handle.as_mut(), sample) {
             (Some(mean), Some(index)) => Some(Accumulation { mean, index }),

@@ -97,3 +97,19 @@ pub fn render_png(
     assert_clean(code, &stdout, &stderr);
     image::open(&out).expect("PNG written").to_rgb8()
 }
+
+/// A renderer on the default device with the validation layer required.
+pub fn renderer() -> blackhole::Renderer {
+    blackhole::Renderer::new(blackhole::RendererOptions {
+        validation: blackhole::vk::Validation::Required,
+    })
+    .expect("a Vulkan device with the validation layer (install mesa-vulkan-drivers and vulkan-validationlayers)")
+}
+
+/// The 8-bit pixels of a frame (panics on a float frame).
+pub fn rgba8(f: blackhole::Frame) -> Vec<u8> {
+    match f.pixels {
+        blackhole::Pixels::Rgba8(p) => p,
+        blackhole::Pixels::Rgba32F(_) => panic!("expected 8-bit pixels"),
+    }
+}
