@@ -17,6 +17,7 @@ use crate::graph::{Graph, ImageHandle, Mips};
 use crate::physics::observer::ObserverKind;
 use crate::render::Overlay;
 use crate::scene::{DiskKind, PRESETS, Scene, SkyKind, Tonemap, VolumeColor};
+use crate::stars::SkyFrame;
 use crate::vk::{Access, Gpu};
 use crate::{Error, Result};
 
@@ -398,13 +399,16 @@ fn scene_editor(ui: &mut Ui, s: &mut Scene) {
         num(ui, "outer_radius", &mut d.outer_radius, 0.05);
         num(ui, "brightness", &mut d.brightness, 0.01);
         num(ui, "temperature_k", &mut d.temperature_k, 20.0);
+        num(ui, "speed", &mut d.speed, 0.01);
+        ui.label("thin:");
+        num(ui, "structure", &mut d.structure, 0.01);
+        num(ui, "opacity", &mut d.opacity, 0.01);
         ui.label("volumetric:");
         num(ui, "height", &mut d.height, 0.01);
         num(ui, "density_v", &mut d.density_v, 0.01);
         num(ui, "density_h", &mut d.density_h, 0.01);
         num(ui, "noise_scale", &mut d.noise_scale, 0.01);
         int(ui, "noise_octaves", &mut d.noise_octaves);
-        num(ui, "speed", &mut d.speed, 0.01);
         num(ui, "lit", &mut d.lit, 0.01);
         choice(
             ui,
@@ -431,14 +435,25 @@ fn scene_editor(ui: &mut Ui, s: &mut Scene) {
             "kind",
             &mut s.sky.kind,
             &[
+                (SkyKind::Catalogue, "catalogue"),
                 (SkyKind::Stars, "stars"),
                 (SkyKind::Checker, "checker"),
                 (SkyKind::Image, "image"),
                 (SkyKind::Cubemap, "cubemap"),
-                (SkyKind::Catalogue, "catalogue"),
                 (SkyKind::Black, "black"),
             ],
         );
+        choice(
+            ui,
+            "frame",
+            &mut s.sky.frame,
+            &[
+                (SkyFrame::Galactic, "galactic"),
+                (SkyFrame::Equatorial, "equatorial"),
+            ],
+        );
+        num(ui, "rotation_deg", &mut s.sky.rotation_deg, 0.5);
+        num(ui, "tilt_deg", &mut s.sky.tilt_deg, 0.5);
         let mut image = s.sky.image.clone().unwrap_or_default();
         ui.horizontal(|ui| {
             ui.text_edit_singleline(&mut image);
