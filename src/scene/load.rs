@@ -84,7 +84,7 @@ impl Scene {
     pub fn from_toml(src: &str, origin: &str) -> Result<Self> {
         let scene: Scene = toml::from_str(src).map_err(|e| {
             let line = e.span().map(|s| locate::line_of(src, s.start));
-            let msg = e.message().trim().replace('\n', " ");
+            let msg = locate::compact_numbers(&e.message().trim().replace('\n', " "));
             let context = e
                 .span()
                 .and_then(|s| locate::line_text(src, s.start))

@@ -41,7 +41,11 @@ pub fn line_text(src: &str, pos: usize) -> Option<String> {
     let start = src[..pos].rfind('\n').map_or(0, |i| i + 1);
     let end = src[pos..].find('\n').map_or(src.len(), |i| pos + i);
     let t = src.get(start..end)?.trim();
-    (!t.is_empty()).then(|| t.to_string())
+    // A message stays one readable line: long lines are cut.
+    const MAX: usize = 80;
+    let shown: String = t.chars().take(MAX).collect();
+    let cut = t.chars().nth(MAX).is_some();
+    (!t.is_empty()).then(|| if cut { format!("{shown}...") } else { shown })
 }
 
 /// Line of the deepest part of `path` present in `src` (the key itself if it
@@ -69,4 +73,48 @@ pub fn line_of_key(src: &str, path: &[Seg]) -> Option<usize> {
         }
     }
     best.map(|p| line_of(src, p))
+}
+
+/// `text` with every number longer than 16 characters written in scientific
+/// notation (`1e308`, not its 309 digits), so a message stays one short line.
+pub fn compact_numbers(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut token = String::new();
+    let flush = |token: &mut String, out: &mut String| {
+        match token.parse::<f64>() {
+            Ok(v) if token.len() > 16 => out.push_str(&format!("{v:e}")),
+            _ => out.push_str(token),
+        }
+        token.clear();
+    };
+    for c in text.chars() {
+        if c.is_ascii_digit() || c == '.' || ((c == 'e' || c == 'E') && !token.is_empty()) {
+            token.push(c);
+        } else if (c == '-' || c == '+') && (token.is_empty() || token.ends_with(['e', 'E'])) {
+            if token.is_empty() {
+                out.push(c);
+            } else {
+                token.push(c);
+            }
+        } else {
+            flush(&mut token, &mut out);
+            out.push(c);
+        }
+    }
+    flush(&mut token, &mut out);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn long_numbers_are_compacted() {
+        let big = format!("{}", 1e300f64);
+        let m = super::compact_numbers(&format!("x = {big}: must be at most 1e9"));
+        assert_eq!(m, "x = 1e300: must be at most 1e9");
+        assert_eq!(
+            super::compact_numbers("line 12: 3.5 and -2"),
+            "line 12: 3.5 and -2"
+        );
+    }
 }

@@ -12,7 +12,26 @@ pub type Invalid = (Vec<Seg>, String, String);
 type Check = std::result::Result<(), Invalid>;
 
 fn fail(path: &[Seg], value: impl std::fmt::Display, why: impl Into<String>) -> Check {
-    Err((path.to_vec(), value.to_string(), why.into()))
+    Err((
+        path.to_vec(),
+        super::locate::compact_numbers(&value.to_string()),
+        why.into(),
+    ))
+}
+
+/// Largest magnitude of any number in a scene: the GPU works in 32-bit
+/// floats, and squares of lengths must stay far inside their range.
+pub const LIMIT: f64 = 1e9;
+
+/// Finite and at most [`LIMIT`] in size.
+trait InRange {
+    fn in_range(&self) -> bool;
+}
+
+impl InRange for f64 {
+    fn in_range(&self) -> bool {
+        self.is_finite() && self.abs() <= LIMIT
+    }
 }
 
 /// `ok`, or the failure.
@@ -26,41 +45,46 @@ fn vec3(v: &[f64; 3]) -> String {
 
 fn finite3(path: &[Seg], v: &[f64; 3]) -> Check {
     rule(
-        v.iter().all(|x| x.is_finite()),
+        v.iter().all(|x| x.in_range()),
         path,
         vec3(v),
-        "must be finite numbers",
+        "must be finite numbers of size at most 1e9",
     )
 }
 
 fn direction(path: &[Seg], v: &[f64; 3]) -> Check {
     rule(
-        v.iter().all(|x| x.is_finite()) && DVec3::from(*v).length() >= 1e-9,
+        v.iter().all(|x| x.in_range()) && DVec3::from(*v).length() >= 1e-9,
         path,
         vec3(v),
-        "must be a finite, non-zero vector",
+        "must be a finite, non-zero vector (sizes at most 1e9)",
     )
 }
 
 fn finite(path: &[Seg], v: f64) -> Check {
-    rule(v.is_finite(), path, v, "must be a finite number")
+    rule(
+        v.in_range(),
+        path,
+        v,
+        "must be a finite number of size at most 1e9",
+    )
 }
 
 fn positive(path: &[Seg], v: f64) -> Check {
     rule(
-        v.is_finite() && v > 0.0,
+        v.in_range() && v > 0.0,
         path,
         v,
-        "must be a finite number > 0",
+        "must be a finite number > 0, at most 1e9",
     )
 }
 
 fn non_negative(path: &[Seg], v: f64) -> Check {
     rule(
-        v.is_finite() && v >= 0.0,
+        v.in_range() && v >= 0.0,
         path,
         v,
-        "must be a finite number >= 0",
+        "must be a finite number >= 0, at most 1e9",
     )
 }
 
@@ -168,7 +192,7 @@ impl Scene {
         direction(&key("normal"), &d.normal)?;
         non_negative(&key("inner_radius"), d.inner_radius)?;
         rule(
-            d.outer_radius.is_finite() && d.outer_radius > d.inner_radius,
+            d.outer_radius.in_range() && d.outer_radius > d.inner_radius,
             &key("outer_radius"),
             d.outer_radius,
             format!(
@@ -178,7 +202,7 @@ impl Scene {
         )?;
         non_negative(&key("brightness"), d.brightness)?;
         rule(
-            d.temperature_k.is_finite() && d.temperature_k > 0.0,
+            d.temperature_k.in_range() && d.temperature_k > 0.0,
             &key("temperature_k"),
             d.temperature_k,
             "must be a finite temperature > 0 kelvin",
@@ -219,7 +243,7 @@ impl Scene {
         finite(&key("rotation_deg"), s.rotation_deg)?;
         finite(&key("tilt_deg"), s.tilt_deg)?;
         rule(
-            s.star_density.is_finite() && (0.0..=1.0).contains(&s.star_density),
+            s.star_density.in_range() && (0.0..=1.0).contains(&s.star_density),
             &key("star_density"),
             s.star_density,
             "must be in [0, 1]",
@@ -241,13 +265,13 @@ impl Scene {
         let key = |k| [Key("quality"), Key(k)];
         rule(q.steps > 0, &key("steps"), 0, "must be at least 1")?;
         rule(
-            q.tolerance.is_finite() && q.tolerance > 0.0 && q.tolerance < 1.0,
+            q.tolerance.in_range() && q.tolerance > 0.0 && q.tolerance < 1.0,
             &key("tolerance"),
             q.tolerance,
             "must be in (0, 1)",
         )?;
         rule(
-            q.escape_radius.is_finite() && q.escape_radius >= 0.0,
+            q.escape_radius.in_range() && q.escape_radius >= 0.0,
             &key("escape_radius"),
             q.escape_radius,
             "must be a finite number >= 0 (0 = automatic)",
@@ -269,7 +293,7 @@ impl Scene {
             "must be in [0, 1)",
         )?;
         rule(
-            p.saturation.is_finite() && (0.0..=4.0).contains(&p.saturation),
+            p.saturation.in_range() && (0.0..=4.0).contains(&p.saturation),
             &[Key("post"), Key("saturation")],
             p.saturation,
             "must be in [0, 4]",
@@ -287,7 +311,7 @@ impl Scene {
         let key = |k| [Key("animation"), Key(k)];
         positive(&key("fps"), a.fps)?;
         rule(
-            a.orbit_radius.is_finite() && a.orbit_radius >= 0.0,
+            a.orbit_radius.in_range() && a.orbit_radius >= 0.0,
             &key("orbit_radius"),
             a.orbit_radius,
             "must be a finite number (radius >= 0)",
@@ -297,7 +321,7 @@ impl Scene {
             ("inclination_deg", a.inclination_deg),
         ] {
             rule(
-                v.is_finite(),
+                v.in_range(),
                 &key(name),
                 v,
                 "must be a finite number (radius >= 0)",
@@ -318,7 +342,7 @@ impl Scene {
         )?;
         for (i, k) in a.keyframes.iter().enumerate() {
             rule(
-                k.time.is_finite() && (i == 0 || k.time > a.keyframes[i - 1].time),
+                k.time.in_range() && (i == 0 || k.time > a.keyframes[i - 1].time),
                 &[Key("animation"), Key("keyframe"), Idx(i), Key("time")],
                 k.time,
                 "keyframe times must be finite and increasing",
