@@ -3,7 +3,7 @@
 //! with the committed reference two ways: the whole image under a perceptual
 //! metric (MSSIM on luma, RMS on chroma: image-compare's hybrid score, 1 =
 //! identical), and locally: the worst 12x12 window's mean absolute
-//! difference, so a broken photon ring, a missing star field or missing
+//! difference (at most 3 levels), so a broken photon ring, a missing star field or missing
 //! bloom (a few per cent of the pixels, which an average over the image
 //! forgives) fails. On a failure the test writes `NAME.actual.png` and
 //! `NAME.difference.png` next to the golden. `BLACKHOLE_BLESS=1` writes new
@@ -27,8 +27,14 @@ const MIN_SCORE: f64 = 0.97;
 const WINDOW: u32 = 12;
 const STEP: u32 = 6;
 /// Largest mean absolute difference of any window, in 8-bit levels (all
-/// channels).
-const MAX_WINDOW_DIFF: f64 = 4.0;
+/// channels). Measured with deliberate breaks (each reverted): with the
+/// photon ring gone (rays within 0.004 of the critical impact parameter
+/// taken as captured) every whole-image score still passed (0.988 to 1)
+/// while the worst windows of `doppler` and `interstellar` reached 5.1 and
+/// 5.0 levels; without the stars the `stars` golden's window reached 132
+/// (and the whole-image scores of five presets fell to 0.73 to 0.89);
+/// without bloom `doppler`'s reached 13.5.
+const MAX_WINDOW_DIFF: f64 = 3.0;
 
 /// The star-field golden: the real sky around Orion, no hole or disk in
 /// view, so every star is a few bright pixels the local measure watches.
