@@ -27,11 +27,43 @@ fn srgb_to_linear(c: f32) -> f32 {
     }
 }
 
+/// Largest side of a sky image, pixels, and the most pixels in one: an 8K
+/// panorama (8192x4096, about 700 MB as linear floats with its mips).
+pub const MAX_SKY_SIDE: u32 = 8192;
+pub const MAX_SKY_PIXELS: u64 = 8192 * 4096;
+
 /// Decodes an image file to linear RGBA f32: 8- and 16-bit files are taken as
-/// sRGB-encoded, float files (HDR, EXR) as linear.
+/// sRGB-encoded, float files (HDR, EXR) as linear. The size is read from the
+/// header first: empty images and ones beyond [`MAX_SKY_SIDE`] or
+/// [`MAX_SKY_PIXELS`] are refused before anything is decoded, and the
+/// decoder runs under the same limits.
 pub fn load_linear(path: &Path) -> Result<(u32, u32, Vec<[f32; 4]>)> {
-    let img = image::open(path)
-        .map_err(|e| Error::Scene(format!("sky image {}: {e}", path.display())))?;
+    let bad =
+        |e: &dyn std::fmt::Display| Error::Scene(format!("sky image {}: {e}", path.display()));
+    let open = || {
+        image::ImageReader::open(path)
+            .map_err(|e| bad(&e))?
+            .with_guessed_format()
+            .map_err(|e| bad(&e))
+    };
+    let (w, h) = open()?.into_dimensions().map_err(|e| bad(&e))?;
+    if w == 0 || h == 0 {
+        return Err(bad(&format!("is empty ({w}x{h})")));
+    }
+    if w > MAX_SKY_SIDE || h > MAX_SKY_SIDE || u64::from(w) * u64::from(h) > MAX_SKY_PIXELS {
+        return Err(bad(&format!(
+            "is {w}x{h}: larger than the limit for sky images ({MAX_SKY_SIDE} per side, \
+             {MAX_SKY_SIDE}x{} in all); downscale it",
+            MAX_SKY_PIXELS / u64::from(MAX_SKY_SIDE)
+        )));
+    }
+    let mut reader = open()?;
+    let mut limits = image::Limits::default();
+    limits.max_image_width = Some(MAX_SKY_SIDE);
+    limits.max_image_height = Some(MAX_SKY_SIDE);
+    limits.max_alloc = Some(MAX_SKY_PIXELS * 16 * 2);
+    reader.limits(limits);
+    let img = reader.decode().map_err(|e| bad(&e))?;
     let is_float = matches!(
         img,
         image::DynamicImage::ImageRgb32F(_) | image::DynamicImage::ImageRgba32F(_)

@@ -386,3 +386,101 @@ fn a_star_keeps_its_flux_as_the_camera_moves_by_fractions_of_a_pixel() {
     println!("flux over eighth-pixel turns: {fluxes:.5?}, spread {spread:.2e}");
     assert!(spread < 0.005, "the star's light changes by {spread:.4}");
 }
+
+/// CRC-32 (the PNG chunk checksum), to forge a header.
+fn crc32(bytes: &[u8]) -> u32 {
+    let mut c = 0xffff_ffffu32;
+    for &b in bytes {
+        c ^= u32::from(b);
+        for _ in 0..8 {
+            c = if c & 1 == 1 {
+                0xedb8_8320 ^ (c >> 1)
+            } else {
+                c >> 1
+            };
+        }
+    }
+    !c
+}
+
+/// A PNG whose header says `w` x `h` and whose pixel data is empty.
+fn png_header_only(w: u32, h: u32) -> Vec<u8> {
+    let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
+    let mut chunk = |kind: &[u8], data: &[u8]| {
+        let mut body = kind.to_vec();
+        body.extend_from_slice(data);
+        png.extend_from_slice(&(data.len() as u32).to_be_bytes());
+        png.extend_from_slice(&body);
+        png.extend_from_slice(&crc32(&body).to_be_bytes());
+    };
+    let mut ihdr = w.to_be_bytes().to_vec();
+    ihdr.extend_from_slice(&h.to_be_bytes());
+    ihdr.extend_from_slice(&[8, 6, 0, 0, 0]); // 8-bit RGBA
+    chunk(b"IHDR", &ihdr);
+    chunk(b"IDAT", &[]);
+    chunk(b"IEND", &[]);
+    png
+}
+
+#[test]
+fn hostile_sky_images_are_refused_with_the_file_named() {
+    let dir = scratch();
+    let scene = path_in(&dir, "sky.toml");
+    let out = path_in(&dir, "out.png");
+    let render = |file: &str| {
+        std::fs::write(
+            &scene,
+            format!("[sky]\nkind = \"image\"\nimage = \"{file}\"\n"),
+        )
+        .unwrap();
+        let mut c = blackhole();
+        c.args(["render", "--width", "32", "--height", "18", "--scene"])
+            .arg(&scene)
+            .arg("--out")
+            .arg(&out);
+        run(c)
+    };
+    // A real image, truncated half-way.
+    let good = path_in(&dir, "good.png");
+    image::RgbImage::from_fn(64, 32, |x, y| {
+        image::Rgb([(x * 4) as u8, (y * 8) as u8, 90])
+    })
+    .save(&good)
+    .unwrap();
+    let bytes = std::fs::read(&good).unwrap();
+    std::fs::write(path_in(&dir, "truncated.png"), &bytes[..bytes.len() / 2]).unwrap();
+    std::fs::write(path_in(&dir, "empty.png"), b"").unwrap();
+    std::fs::write(path_in(&dir, "huge.png"), png_header_only(100_000, 100_000)).unwrap();
+    std::fs::write(path_in(&dir, "zero.png"), png_header_only(0, 16)).unwrap();
+    std::fs::write(path_in(&dir, "wide.png"), png_header_only(u32::MAX / 2, 1)).unwrap();
+    for (file, says) in [
+        ("truncated.png", ""),
+        ("empty.png", ""),
+        ("huge.png", "larger than the limit"),
+        ("zero.png", ""),
+        ("wide.png", ""),
+    ] {
+        let (code, _, stderr) = render(file);
+        assert_eq!(code, 2, "{file}: {stderr}");
+        let errors: Vec<&str> = stderr.lines().filter(|l| l.starts_with("error")).collect();
+        assert_eq!(errors.len(), 1, "{file}: one error line: {stderr}");
+        assert!(
+            errors[0].contains(file) && errors[0].contains(says),
+            "{file}: {stderr}"
+        );
+        assert!(!stderr.contains("panicked"), "{file}: {stderr}");
+        assert!(!out.exists(), "{file}: no output");
+    }
+    // Other channel counts are fine: grey and grey with alpha.
+    image::GrayImage::from_pixel(64, 32, image::Luma([128]))
+        .save(path_in(&dir, "grey.png"))
+        .unwrap();
+    image::GrayAlphaImage::from_pixel(64, 32, image::LumaA([128, 255]))
+        .save(path_in(&dir, "grey_alpha.png"))
+        .unwrap();
+    for file in ["grey.png", "grey_alpha.png"] {
+        let (code, stdout, stderr) = render(file);
+        common::assert_clean(code, &stdout, &stderr);
+        std::fs::remove_file(&out).unwrap();
+    }
+}
