@@ -429,3 +429,82 @@ fn exr_post_applies_exposure_and_bloom_but_stays_linear() {
     assert_eq!(code, 2);
     assert!(stderr.contains("--exr-post"), "{stderr}");
 }
+
+#[test]
+fn an_interrupted_sequence_leaves_complete_frames_and_resume_renders_the_rest() {
+    let dir = scratch();
+    let out = path_in(&dir, "seq.png");
+    let args = |c: &mut std::process::Command| {
+        c.args([
+            "render", "--width", "240", "--height", "135", "--spp", "2", "--frames", "0..24",
+            "--out",
+        ])
+        .arg(&out);
+    };
+    let frame = |i: u32| path_in(&dir, &format!("seq_{i:04}.png"));
+    let mut c = blackhole();
+    args(&mut c);
+    let mut child = c
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    // SIGTERM (as a batch system sends) once two frames are there.
+    let t0 = std::time::Instant::now();
+    while !frame(1).exists() {
+        assert!(t0.elapsed().as_secs() < 120, "no frames after two minutes");
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    std::process::Command::new("sh")
+        .arg("-c")
+        .arg(format!("kill -TERM {}", child.id()))
+        .status()
+        .unwrap();
+    let status = child.wait().unwrap();
+    let mut stderr = String::new();
+    std::io::Read::read_to_string(child.stderr.as_mut().unwrap(), &mut stderr).unwrap();
+    assert_eq!(status.code(), Some(130), "{stderr}");
+    assert!(
+        stderr.contains("interrupted") && stderr.contains("--resume"),
+        "{stderr}"
+    );
+    // Only whole frames: every file there decodes, no temporary files.
+    let names: Vec<String> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with("seq") || n.contains(".tmp"))
+        .collect();
+    assert!(names.iter().all(|n| !n.contains(".tmp")), "{names:?}");
+    let done = names.len();
+    assert!((2..24).contains(&done), "{done} frames before the signal");
+    for n in &names {
+        image::open(dir.path().join(n)).unwrap_or_else(|e| panic!("{n}: {e}"));
+    }
+    // --resume renders just the missing ones.
+    let mut c = blackhole();
+    args(&mut c);
+    c.arg("--resume");
+    let (code, stdout, stderr) = run(c);
+    assert_clean(code, &stdout, &stderr);
+    assert!(
+        stdout.contains(&format!("wrote {} frames", 24 - done))
+            && stdout.contains(&format!("{done} already there")),
+        "{stdout}"
+    );
+    for i in 0..24 {
+        assert!(frame(i).is_file(), "frame {i}");
+    }
+}
+
+#[test]
+fn an_unwritable_output_folder_is_refused_before_rendering() {
+    let mut c = blackhole();
+    c.args(["render", "--out", "/proc/blackhole.png"]);
+    let (code, _, stderr) = run(c);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("cannot write in /proc"), "{stderr}");
+    assert!(
+        !stderr.contains("Vulkan device"),
+        "checked before the GPU: {stderr}"
+    );
+}

@@ -102,6 +102,11 @@ pub enum Command {
         /// map: anti-aliased stills and sequences at N times the ray march.
         #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1024))]
         spp: u32,
+        /// With --frames: render only the frames whose files are missing (each
+        /// file is written whole and renamed into place, so one that exists is
+        /// complete), e.g. after an interrupted run.
+        #[arg(long, requires = "frames")]
+        resume: bool,
     },
     /// Plot photon paths in the hole's equatorial plane (SVG), with the horizon,
     /// the photon sphere and the ISCO.
@@ -208,6 +213,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
             frames,
             exr_post,
             spp,
+            resume,
         } => render::run(
             view,
             out,
@@ -216,6 +222,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
                 frames,
                 exr_post,
                 spp,
+                resume,
             },
         ),
         Command::Trace { scene, out } => trace::run(scene.as_deref(), &out),
