@@ -508,3 +508,25 @@ fn an_unwritable_output_folder_is_refused_before_rendering() {
         "checked before the GPU: {stderr}"
     );
 }
+
+#[test]
+fn a_frame_past_the_gpu_timeout_is_an_error_not_a_hang() {
+    let dir = scratch();
+    let out = path_in(&dir, "slow.png");
+    let mut c = blackhole();
+    c.env("BLACKHOLE_GPU_TIMEOUT_S", "0.001")
+        .args(["render", "--scene", "interstellar", "--out"])
+        .arg(&out);
+    let t = std::time::Instant::now();
+    let (code, _, stderr) = run(c);
+    assert!(t.elapsed().as_secs() < 60, "took {:?}", t.elapsed());
+    assert_eq!(code, 1, "{stderr}");
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.starts_with("error")).collect();
+    assert_eq!(errors.len(), 1, "{stderr}");
+    assert!(errors[0].contains("BLACKHOLE_GPU_TIMEOUT_S"), "{stderr}");
+    assert!(
+        !stderr.contains("panicked") && !stderr.contains("VALIDATION"),
+        "{stderr}"
+    );
+    assert!(!out.exists());
+}

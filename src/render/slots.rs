@@ -72,7 +72,9 @@ impl FrameSlot {
     /// resources are free to reuse.
     pub fn wait(&mut self) -> Result<Option<FrameTimings>> {
         let t = Instant::now();
-        self.commands.wait()?;
+        if let Err(e) = self.commands.wait() {
+            return Err(self.failed_in(e));
+        }
         self.cpu.wait_ms = ms_since(t);
         if let Some(s) = self.submitted.take() {
             self.wall_ms = ms_since(s);
@@ -137,6 +139,43 @@ impl FrameSlot {
         Ok(())
     }
 
+    /// `e` (a fence that timed out, a lost device, no memory) with the pass
+    /// the frame was in: the first timed pass whose end the GPU had not
+    /// written.
+    fn failed_in(&self, e: Error) -> Error {
+        let Error::Vulkan { result, .. } = e else {
+            return e;
+        };
+        let why = match result {
+            vk::Result::TIMEOUT => format!(
+                "the GPU did not finish the frame within {} s (BLACKHOLE_GPU_TIMEOUT_S)",
+                crate::vk::gpu_timeout().as_secs_f64()
+            ),
+            vk::Result::ERROR_DEVICE_LOST => "the GPU device was lost".to_string(),
+            vk::Result::ERROR_OUT_OF_DEVICE_MEMORY | vk::Result::ERROR_OUT_OF_HOST_MEMORY => {
+                "the GPU ran out of memory".to_string()
+            }
+            other => format!("the frame failed ({other})"),
+        };
+        let count = graph::execute::timestamp_count(self.timed.len());
+        let running = self
+            .timestamps
+            .as_ref()
+            .and_then(|ts| ts.written(count).ok())
+            .and_then(|done| {
+                self.timed
+                    .iter()
+                    .enumerate()
+                    .find(|(i, _)| !done.get(2 * i + 1).copied().unwrap_or(false))
+                    .map(|(_, n)| n.clone())
+            });
+        let what = match running {
+            Some(pass) => format!("{why}, in pass `{pass}`"),
+            None => why,
+        };
+        Error::Vulkan { what, result }
+    }
+
     fn read_timings(&self) -> Result<FrameTimings> {
         let Some(ts) = &self.timestamps else {
             return Ok(FrameTimings::default());
@@ -162,6 +201,14 @@ impl FrameSlot {
             frame_ms,
             ..FrameTimings::default()
         })
+    }
+}
+
+impl Drop for FrameSlot {
+    fn drop(&mut self) {
+        // The readback, timestamps and transients go first (field order):
+        // the GPU must be done with them.
+        self.commands.settle();
     }
 }
 

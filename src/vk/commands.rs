@@ -117,21 +117,52 @@ impl CommandContext {
         self.gpu.queue_submit2(&submit, self.fence)
     }
 
-    /// Waits until the last submission has finished.
+    /// Waits until the last submission has finished, at most
+    /// [`gpu_timeout`]: a frame that takes longer (a hung GPU) is an error
+    /// (`vk::Result::TIMEOUT`), not a hang; so are a lost device and a
+    /// device out of memory, which the fence reports.
     pub fn wait(&self) -> Result<()> {
+        let timeout = gpu_timeout();
         // SAFETY: the fence is ours.
-        unsafe {
+        let r = unsafe {
             self.gpu
                 .device
-                .wait_for_fences(&[self.fence], true, u64::MAX)
+                .wait_for_fences(&[self.fence], true, timeout.as_nanos() as u64)
+        };
+        match r {
+            Ok(()) => Ok(()),
+            Err(vk::Result::TIMEOUT) => Err(crate::Error::Vulkan {
+                what: format!(
+                    "the GPU did not finish within {} s (BLACKHOLE_GPU_TIMEOUT_S)",
+                    timeout.as_secs_f64()
+                ),
+                result: vk::Result::TIMEOUT,
+            }),
+            Err(result) => Err(crate::Error::Vulkan {
+                what: "waiting for the GPU to finish".into(),
+                result,
+            }),
         }
-        .ctx(|| "waiting for the frame to finish".into())
+    }
+
+    /// Before the caller frees what the last submission used: waits for it,
+    /// at most [`drop_timeout`], ignoring failures (the frame's own error was
+    /// reported already).
+    pub fn settle(&self) {
+        // SAFETY: the fence is ours.
+        let _ = unsafe {
+            self.gpu
+                .device
+                .wait_for_fences(&[self.fence], true, drop_timeout().as_nanos() as u64)
+        };
     }
 
     /// Ends recording, submits, and waits for the GPU to finish.
+    /// On a failed wait it still lets the GPU settle (see [`Self::settle`]),
+    /// so the caller may free what the submission used.
     pub fn submit_and_wait(&mut self) -> Result<()> {
         self.submit(&[], &[])?;
-        self.wait()
+        self.wait().inspect_err(|_| self.settle())
     }
 }
 
@@ -141,7 +172,7 @@ impl Drop for CommandContext {
         unsafe {
             let d = &self.gpu.device;
             if self.fence != vk::Fence::null() {
-                let _ = d.wait_for_fences(&[self.fence], true, u64::MAX);
+                let _ = d.wait_for_fences(&[self.fence], true, drop_timeout().as_nanos() as u64);
                 d.destroy_fence(self.fence, None);
             }
             if self.pool != vk::CommandPool::null() {
@@ -149,4 +180,21 @@ impl Drop for CommandContext {
             }
         }
     }
+}
+
+/// Longest wait for one submission: `BLACKHOLE_GPU_TIMEOUT_S` seconds, or
+/// 600 (a 4K volumetric frame on a CPU driver takes seconds, not minutes).
+pub fn gpu_timeout() -> std::time::Duration {
+    let secs = std::env::var("BLACKHOLE_GPU_TIMEOUT_S")
+        .ok()
+        .and_then(|v| v.parse::<f64>().ok())
+        .filter(|s| s.is_finite() && *s > 0.0)
+        .unwrap_or(600.0);
+    std::time::Duration::from_secs_f64(secs.min(1e7))
+}
+
+/// Longest wait before resources are freed: [`gpu_timeout`], but at least
+/// ten seconds (a frame that timed out may still finish).
+pub fn drop_timeout() -> std::time::Duration {
+    gpu_timeout().max(std::time::Duration::from_secs(10))
 }

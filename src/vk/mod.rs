@@ -14,7 +14,7 @@ pub mod sync;
 pub mod timestamps;
 
 pub use buffer::{Buffer, BufferBinding};
-pub use commands::CommandContext;
+pub use commands::{CommandContext, gpu_timeout};
 pub use descriptors::{Descriptor, bind_compute, push_constants};
 pub use device::{DeviceInfo, Gpu, PresentCheck};
 pub use image::{Image, ImageBinding, ImageDesc, Sampler};

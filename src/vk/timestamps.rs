@@ -44,6 +44,28 @@ impl TimestampPool {
         };
     }
 
+    /// Which of the first `count` timestamps the GPU has written so far (no
+    /// waiting; for naming the pass a failed frame was in).
+    pub fn written(&self, count: u32) -> Result<Vec<bool>> {
+        let mut words = vec![[0u64; 2]; count.min(self.capacity) as usize];
+        if words.is_empty() {
+            return Ok(Vec::new());
+        }
+        // SAFETY: the pool holds `count` queries; no wait is asked for.
+        let r = unsafe {
+            self.gpu.device.get_query_pool_results(
+                self.pool,
+                0,
+                &mut words,
+                vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WITH_AVAILABILITY,
+            )
+        };
+        match r {
+            Ok(()) | Err(vk::Result::NOT_READY) => Ok(words.iter().map(|w| w[1] != 0).collect()),
+            Err(e) => Err(e).ctx(|| "reading GPU timestamps".into()),
+        }
+    }
+
     /// Reads `count` timestamps (after the fence) as nanoseconds since the first.
     pub fn read_ns(&self, count: u32) -> Result<Vec<f64>> {
         if count == 0 {
