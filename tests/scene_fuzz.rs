@@ -39,7 +39,8 @@ fn check(src: &str) {
             let m = e.to_string();
             assert!(!m.contains('\n'), "not one line: {m}");
             assert!(m.starts_with("fuzz.toml"), "does not name the file: {m}");
-            assert!(m.len() < 300, "too long ({} bytes): {m}", m.len());
+            // Long enough for the list of the keys a table takes.
+            assert!(m.len() < 600, "too long ({} bytes): {m}", m.len());
         }
     }
 }
@@ -71,7 +72,14 @@ const VALUES: &[&str] = &[
 ];
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(1500))]
+    // A fixed seed, so a run is the same on every machine (set
+    // PROPTEST_CASES higher to search further), and no regression files.
+    #![proptest_config(ProptestConfig {
+        cases: 1500,
+        failure_persistence: None,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(0x626c_6163_6b68),
+        ..ProptestConfig::default()
+    })]
 
     #[test]
     fn random_text_is_refused_cleanly(s in "\\PC{0,300}") {

@@ -249,3 +249,44 @@ fn a_scene_saved_from_the_panel_loads_back_unchanged() {
     back.base_dir = scene.base_dir.clone();
     assert_eq!(back, scene);
 }
+
+#[test]
+fn the_window_survives_200_random_resizes_and_a_minimise() {
+    let _one = one_at_a_time();
+    let dir = scratch();
+    let shot = path_in(&dir, "resized.png");
+    let mut child = spawn_window(&shot);
+    let id = window_id(&mut child);
+    std::thread::sleep(Duration::from_millis(500));
+    // A fixed pseudo-random walk of sizes, tiny to large, some sent without
+    // waiting so the swapchain goes out of date mid-frame.
+    let mut state = 0x9e37_79b9u32;
+    let mut next = |n: u32| {
+        state ^= state << 13;
+        state ^= state >> 17;
+        state ^= state << 5;
+        state % n
+    };
+    for i in 0..200 {
+        let (w, h) = match i % 10 {
+            0 => (1 + next(4), 1 + next(4)),
+            _ => (16 + next(1200), 16 + next(700)),
+        };
+        let (w, h) = (w.to_string(), h.to_string());
+        if i % 3 == 0 {
+            xdotool(&["windowsize", "--sync", &id, &w, &h]);
+        } else {
+            xdotool(&["windowsize", &id, &w, &h]);
+        }
+        if i == 100 {
+            xdotool(&["windowminimize", "--sync", &id]);
+            std::thread::sleep(Duration::from_millis(300));
+            xdotool(&["windowmap", "--sync", &id]);
+        }
+    }
+    xdotool(&["windowsize", "--sync", &id, "640", "360"]);
+    let (code, out, err) = finish(child, &id, 30);
+    assert_clean(code, &out, &err);
+    let img = image::open(&shot).expect("a screenshot").to_rgb8();
+    assert_eq!(img.dimensions(), (640, 360));
+}

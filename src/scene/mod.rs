@@ -51,7 +51,7 @@ mod tests {
         let e = Scene::from_toml(src, "s.toml").unwrap_err().to_string();
         assert_eq!(
             e,
-            "s.toml:6: black_hole[0].rs = -1: must be a finite number > 0, at most 1e9"
+            "s.toml:6: black_hole[0].rs = -1: must be a finite number > 0, from 1e-9 to 1e9"
         );
     }
 

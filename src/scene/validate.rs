@@ -72,10 +72,10 @@ fn finite(path: &[Seg], v: f64) -> Check {
 
 fn positive(path: &[Seg], v: f64) -> Check {
     rule(
-        v.in_range() && v > 0.0,
+        v.in_range() && v >= 1.0 / LIMIT,
         path,
         v,
-        "must be a finite number > 0, at most 1e9",
+        "must be a finite number > 0, from 1e-9 to 1e9",
     )
 }
 
