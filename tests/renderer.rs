@@ -108,3 +108,52 @@ fn spp_averages_jittered_samples_deterministically() {
     assert_eq!(r.validation_counts(), (0, 0));
     r.shutdown().expect("nothing outlives the renderer");
 }
+
+/// Resident memory of this process, MB (Linux).
+fn rss_mb() -> f64 {
+    let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
+    status
+        .lines()
+        .find_map(|l| l.strip_prefix("VmRSS:"))
+        .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<f64>().ok())
+        .map_or(0.0, |kb| kb / 1024.0)
+}
+
+/// A long run (`cargo test --release --test renderer -- --ignored
+/// --nocapture`): 10,000 offscreen frames at 64x36 alternating two scenes,
+/// validation silent, resident memory and transient images flat.
+#[test]
+#[ignore = "long run: about two minutes on lavapipe"]
+fn ten_thousand_offscreen_frames_hold_memory_flat() {
+    let mut r = renderer();
+    let default = Scene::builtin_default().unwrap();
+    let doppler = Scene::load("doppler").unwrap();
+    let mut first = (0.0, 0);
+    let t = std::time::Instant::now();
+    for i in 0..10_000u32 {
+        let scene = if i % 2 == 0 { &default } else { &doppler };
+        r.render(&scene.at_frame(u64::from(i)), 64, 36, OutputKind::Ldr)
+            .unwrap();
+        if i == 99 {
+            first = (rss_mb(), r.transient_images());
+        }
+    }
+    let last = (rss_mb(), r.transient_images());
+    println!(
+        "10,000 frames in {:.0} s: resident {:.1} MB after 100 frames, {:.1} MB after 10,000; transient images {} and {}; validation {:?}",
+        t.elapsed().as_secs_f64(),
+        first.0,
+        last.0,
+        first.1,
+        last.1,
+        r.validation_counts()
+    );
+    assert_eq!(r.validation_counts(), (0, 0));
+    assert_eq!(first.1, last.1, "transient images grew");
+    assert!(
+        last.0 - first.0 < 20.0,
+        "resident memory grew by {:.1} MB",
+        last.0 - first.0
+    );
+    r.shutdown().expect("nothing outlives the renderer");
+}

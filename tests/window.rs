@@ -290,3 +290,62 @@ fn the_window_survives_200_random_resizes_and_a_minimise() {
     let img = image::open(&shot).expect("a screenshot").to_rgb8();
     assert_eq!(img.dimensions(), (640, 360));
 }
+
+/// Resident memory of process `pid`, MB (Linux).
+fn rss_of(pid: u32) -> f64 {
+    std::fs::read_to_string(format!("/proc/{pid}/status"))
+        .unwrap_or_default()
+        .lines()
+        .find_map(|l| l.strip_prefix("VmRSS:"))
+        .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<f64>().ok())
+        .map_or(0.0, |kb| kb / 1024.0)
+}
+
+/// A long run (`cargo test --release --test window -- --ignored
+/// --nocapture`): 1,000 windowed frames under Xvfb with validation on,
+/// resident memory sampled through the run.
+#[test]
+#[ignore = "long run: about a minute under Xvfb"]
+fn a_thousand_window_frames_hold_memory_flat() {
+    let _one = one_at_a_time();
+    let mut c = blackhole();
+    c.env("DISPLAY", display())
+        .args([
+            "window", "--width", "320", "--height", "180", "--frames", "1000",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped());
+    let child = c.spawn().expect("the blackhole binary runs");
+    let pid = child.id();
+    let mut samples = Vec::new();
+    let t = std::time::Instant::now();
+    while t.elapsed().as_secs() < 600 {
+        let rss = rss_of(pid);
+        if rss == 0.0 {
+            break;
+        }
+        samples.push(rss);
+        std::thread::sleep(Duration::from_millis(500));
+    }
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_clean(
+        out.status.code().unwrap_or(-1),
+        &String::from_utf8_lossy(&out.stdout),
+        &err,
+    );
+    assert!(err.contains("presented 1000"), "{err}");
+    // From a tenth of the run (after start-up) to its last sample.
+    let start = samples[samples.len() / 10];
+    let end = samples[samples.len().saturating_sub(2)];
+    println!(
+        "1,000 window frames in {:.0} s: resident {start:.1} MB early, {end:.1} MB late ({} samples)",
+        t.elapsed().as_secs_f64(),
+        samples.len()
+    );
+    assert!(
+        end - start < 20.0,
+        "resident memory grew by {:.1} MB",
+        end - start
+    );
+}

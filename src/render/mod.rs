@@ -134,6 +134,12 @@ impl Renderer {
     }
 
     /// The device in use.
+    /// Images the frame slots' transient pools hold (the objects frames
+    /// create; a long run must not grow it).
+    pub fn transient_images(&self) -> usize {
+        self.slots.iter().map(|s| s.transients.len()).sum()
+    }
+
     pub fn device_name(&self) -> &str {
         &self.gpu.info.name
     }
