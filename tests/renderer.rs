@@ -57,7 +57,21 @@ fn zero_sized_or_huge_images_are_usage_errors() {
     let mut r = renderer();
     let scene = Scene::builtin_default().unwrap();
     assert!(r.render(&scene, 0, 10, OutputKind::Ldr).is_err());
-    assert!(r.render(&scene, 1 << 20, 10, OutputKind::Ldr).is_err());
+    let e = r
+        .render(&scene, 1 << 20, 10, OutputKind::Ldr)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("per side"), "the side limit named: {e}");
+    // Within the side limit but past the device's memory: refused with the
+    // heap named, before anything is allocated.
+    let e = r
+        .render(&scene, 16384, 16384, OutputKind::Ldr)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("GB of GPU memory") && e.contains("largest heap"),
+        "{e}"
+    );
     assert_eq!(r.validation_counts(), (0, 0));
     r.shutdown().expect("nothing outlives the renderer");
 }

@@ -180,6 +180,19 @@ impl Renderer {
                 self.gpu.info.name
             )));
         }
+        // Memory: the frame's images and readback take about 64 bytes a
+        // pixel at most (HDR, accumulated mean, bloom chain, 8-bit output,
+        // a float readback); refuse what cannot fit in the largest heap.
+        let need = u64::from(width) * u64::from(height) * 64;
+        let heap = self.gpu.largest_device_heap();
+        if heap > 0 && need > heap / 10 * 8 {
+            return Err(Error::Usage(format!(
+                "image size {width}x{height} needs about {:.1} GB of GPU memory; {} has {:.1} GB (its largest heap)",
+                need as f64 / 1e9,
+                self.gpu.info.name,
+                heap as f64 / 1e9
+            )));
+        }
         Ok(())
     }
 

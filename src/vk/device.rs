@@ -309,6 +309,22 @@ impl Gpu {
         })
     }
 
+    /// Size of the device's largest device-local memory heap, bytes.
+    pub fn largest_device_heap(&self) -> u64 {
+        // SAFETY: the physical device belongs to the live instance.
+        let mem = unsafe {
+            self.instance
+                .instance
+                .get_physical_device_memory_properties(self.physical)
+        };
+        mem.memory_heaps[..mem.memory_heap_count as usize]
+            .iter()
+            .filter(|h| h.flags.contains(vk::MemoryHeapFlags::DEVICE_LOCAL))
+            .map(|h| h.size)
+            .max()
+            .unwrap_or(0)
+    }
+
     /// Largest width or height of a 2-D image on this device.
     pub fn max_image_dimension(&self) -> u32 {
         // SAFETY: the physical device belongs to the live instance.
