@@ -567,7 +567,7 @@ void main() {
     // from one pixel to the next, across and down. Unlensed, pixel_angle in
     // two directions at right angles to it.
     vec3 t1 = normalize(cross(hit.dir, abs(hit.dir.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
-    Footprint fp = Footprint(pixel_angle * t1, pixel_angle * cross(hit.dir, t1));
+    Footprint fp = Footprint(pixel_angle * t1, pixel_angle * cross(hit.dir, t1), pixel_angle);
 #ifdef RAY_DIFFERENTIALS
     // Lensed: from the quad's neighbours (one-sided differences), where the
     // neighbour escaped too and its direction is near (not across the
@@ -586,11 +586,11 @@ void main() {
     float lx = length(ax), ly = length(ay);
     bool okx = eh && lx < NEAR && lx > tiny, oky = ev && ly < NEAR && ly > tiny;
     if (okx && oky) {
-        fp = Footprint(ax, ay);
+        fp = Footprint(ax, ay, pixel_angle);
     } else if (okx) {
-        fp = Footprint(ax, pixel_angle * normalize(cross(hit.dir, ax + 1e-12 * t1)));
+        fp = Footprint(ax, pixel_angle * normalize(cross(hit.dir, ax + 1e-12 * t1)), pixel_angle);
     } else if (oky) {
-        fp = Footprint(pixel_angle * normalize(cross(ay + 1e-12 * t1, hit.dir)), ay);
+        fp = Footprint(pixel_angle * normalize(cross(ay + 1e-12 * t1, hit.dir)), ay, pixel_angle);
     }
 #endif
     if (hit.outcome == OUT_ESCAPED) {

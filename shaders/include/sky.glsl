@@ -10,6 +10,7 @@
 struct Footprint {
     vec3 x;
     vec3 y;
+    float pixel;   // the unlensed pixel angle
 };
 
 // The footprint's largest extent, radians per pixel.
@@ -147,9 +148,14 @@ vec3 sky_catalogue(vec3 dw, Footprint f) {
     vec3 d = normalize(m * dw);
     vec3 ax = m * f.x, ay = m * f.y;
     float m11 = dot(ax, ax), m12 = dot(ax, ay), m22 = dot(ay, ay);
-    float det = max(m11 * m22 - m12 * m12, 1e-30);
-    float area = sqrt(det);                 // solid angle of a pixel
-    float size = footprint_size(Footprint(ax, ay));
+    // The solid angle of a pixel, at least 1/MAX_GAIN of the unlensed one:
+    // at a critical curve the linear footprint degenerates and a star would
+    // flash up without bound; a pixel's real magnification stays finite.
+    const float MAX_GAIN = 50.0;
+    float min_area = f.pixel * f.pixel / MAX_GAIN;
+    float det = max(m11 * m22 - m12 * m12, min_area * min_area);
+    float area = sqrt(det);
+    float size = footprint_size(Footprint(ax, ay, f.pixel));
     uint face;
     vec2 uv;
     cube_face(d, face, uv);
