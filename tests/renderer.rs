@@ -1,6 +1,8 @@
 //! The library API on lavapipe: frames through the frame graph, per-pass GPU
 //! timings, transient reuse, and a silent validation layer.
 
+mod common;
+
 use blackhole::vk::Validation;
 use blackhole::{OutputKind, Pixels, Renderer, RendererOptions, Scene};
 
@@ -127,16 +129,6 @@ fn spp_averages_jittered_samples_deterministically() {
     r.shutdown().expect("nothing outlives the renderer");
 }
 
-/// Resident memory of this process, MB (Linux).
-fn rss_mb() -> f64 {
-    let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
-    status
-        .lines()
-        .find_map(|l| l.strip_prefix("VmRSS:"))
-        .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<f64>().ok())
-        .map_or(0.0, |kb| kb / 1024.0)
-}
-
 /// A long run (`cargo test --release --test renderer -- --ignored
 /// --nocapture`): 10,000 offscreen frames at 64x36 alternating two scenes,
 /// validation silent, resident memory and transient images flat.
@@ -153,10 +145,10 @@ fn ten_thousand_offscreen_frames_hold_memory_flat() {
         r.render(&scene.at_frame(u64::from(i)), 64, 36, OutputKind::Ldr)
             .unwrap();
         if i == 99 {
-            first = (rss_mb(), r.transient_images());
+            first = (common::rss_mb(std::process::id()), r.transient_images());
         }
     }
-    let last = (rss_mb(), r.transient_images());
+    let last = (common::rss_mb(std::process::id()), r.transient_images());
     println!(
         "10,000 frames in {:.0} s: resident {:.1} MB after 100 frames, {:.1} MB after 10,000; transient images {} and {}; validation {:?}",
         t.elapsed().as_secs_f64(),

@@ -291,16 +291,6 @@ fn the_window_survives_200_random_resizes_and_a_minimise() {
     assert_eq!(img.dimensions(), (640, 360));
 }
 
-/// Resident memory of process `pid`, MB (Linux).
-fn rss_of(pid: u32) -> f64 {
-    std::fs::read_to_string(format!("/proc/{pid}/status"))
-        .unwrap_or_default()
-        .lines()
-        .find_map(|l| l.strip_prefix("VmRSS:"))
-        .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<f64>().ok())
-        .map_or(0.0, |kb| kb / 1024.0)
-}
-
 /// A long run (`cargo test --release --test window -- --ignored
 /// --nocapture`): 1,000 windowed frames under Xvfb with validation on,
 /// resident memory sampled through the run.
@@ -320,7 +310,7 @@ fn a_thousand_window_frames_hold_memory_flat() {
     let mut samples = Vec::new();
     let t = std::time::Instant::now();
     while t.elapsed().as_secs() < 600 {
-        let rss = rss_of(pid);
+        let rss = common::rss_mb(pid);
         if rss == 0.0 {
             break;
         }

@@ -113,3 +113,13 @@ pub fn rgba8(f: blackhole::Frame) -> Vec<u8> {
         blackhole::Pixels::Rgba32F(_) => panic!("expected 8-bit pixels"),
     }
 }
+
+/// Resident memory of process `pid`, MB (Linux; 0 when it is gone).
+pub fn rss_mb(pid: u32) -> f64 {
+    std::fs::read_to_string(format!("/proc/{pid}/status"))
+        .unwrap_or_default()
+        .lines()
+        .find_map(|l| l.strip_prefix("VmRSS:"))
+        .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<f64>().ok())
+        .map_or(0.0, |kb| kb / 1024.0)
+}
