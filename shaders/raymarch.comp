@@ -3,13 +3,13 @@
 // equation of geodesic.glsl until it falls into a horizon, hits the thin disk,
 // escapes to the sky, or runs out of its step budget. Writes linear HDR.
 
-layout(local_size_x = 8, local_size_y = 8) in;
-
 #if !defined(GEODESIC_AOV) && !defined(NO_QUAD)
 // Ray differentials from 2x2 quads of pixels (see main).
 #extension GL_KHR_shader_subgroup_quad : require
 #define RAY_DIFFERENTIALS
 #endif
+
+layout(local_size_x = 8, local_size_y = 8) in;
 
 // Specialization constants (src/passes/raymarch.rs, `Variant`): code a
 // scene does not use is compiled out of its pipeline. On a CPU driver such as

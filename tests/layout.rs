@@ -232,3 +232,49 @@ fn specialization_constants_match_the_glsl_ids() {
         assert_eq!(glsl, rust);
     }
 }
+
+/// Offsets of a push-constant block in `spirv` against the Rust struct's.
+fn push_matches(spirv: &[u8], rust: &[usize]) {
+    let glsl = member_offsets(spirv, "Push");
+    let rust: Vec<u32> = rust.iter().map(|&o| o as u32).collect();
+    assert_eq!(glsl, rust);
+}
+
+#[test]
+fn bloom_and_exposure_push_constants_match_the_glsl_blocks() {
+    use blackhole::passes::bloom::{BloomDownPush, BloomPrefilterPush, BloomUpPush};
+    use blackhole::passes::exposure::ExposurePush;
+    push_matches(
+        blackhole::shaders::BLOOM_PREFILTER,
+        &[
+            offset_of!(BloomPrefilterPush, src_texel),
+            offset_of!(BloomPrefilterPush, dst_size),
+            offset_of!(BloomPrefilterPush, threshold),
+            offset_of!(BloomPrefilterPush, knee),
+        ],
+    );
+    push_matches(
+        blackhole::shaders::BLOOM_DOWN,
+        &[
+            offset_of!(BloomDownPush, src_texel),
+            offset_of!(BloomDownPush, dst_size),
+        ],
+    );
+    push_matches(
+        blackhole::shaders::BLOOM_UP,
+        &[
+            offset_of!(BloomUpPush, src_texel),
+            offset_of!(BloomUpPush, dst_size),
+            offset_of!(BloomUpPush, radius),
+        ],
+    );
+    push_matches(
+        blackhole::shaders::EXPOSURE,
+        &[
+            offset_of!(ExposurePush, size),
+            offset_of!(ExposurePush, low),
+            offset_of!(ExposurePush, high),
+            offset_of!(ExposurePush, key),
+        ],
+    );
+}

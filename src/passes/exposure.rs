@@ -7,7 +7,7 @@
 use ash::vk;
 use bytemuck::{Pod, Zeroable};
 
-use super::Pipelines;
+use super::{Pipelines, dispatch_2d};
 use crate::graph::{Graph, ImageDesc, ImageHandle, Mips};
 use crate::scene::Post;
 use crate::vk::{Access, Descriptor};
@@ -51,20 +51,18 @@ pub fn add_exposure<'a>(
         .read(hdr, Access::ComputeSampledRead, Mips::ALL)
         .write(&mut exposure, Access::ComputeStorageWrite, Mips::ALL)
         .record(move |ctx| {
-            let pipeline = &pipelines.exposure;
-            crate::vk::bind_compute(
-                ctx.gpu,
-                ctx.cmd,
-                pipeline,
+            // One workgroup (256 invocations) meters the whole image.
+            dispatch_2d(
+                ctx,
+                &pipelines.exposure,
                 &[
                     Descriptor::SampledImage(ctx.full_view(&input), pipelines.linear_clamp.sampler),
                     Descriptor::StorageImage(ctx.view(&output, 0)),
                 ],
-            )?;
-            crate::vk::push_constants(ctx.gpu, ctx.cmd, pipeline, bytemuck::bytes_of(&push));
-            // SAFETY: the pipeline and its descriptors are bound on a recording buffer.
-            unsafe { ctx.gpu.device.cmd_dispatch(ctx.cmd, 1, 1, 1) };
-            Ok(())
+                bytemuck::bytes_of(&push),
+                1,
+                1,
+            )
         });
     Some(exposure)
 }
