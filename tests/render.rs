@@ -530,3 +530,39 @@ fn a_frame_past_the_gpu_timeout_is_an_error_not_a_hang() {
     );
     assert!(!out.exists());
 }
+
+/// The failures a real GPU can produce and lavapipe never does, injected
+/// (`BLACKHOLE_FAULT`, src/vk/fault.rs): a device lost or out of memory while
+/// the first frame is still running, and an allocation refused. Each ends the
+/// run with one error line saying what happened, exit 1, no panic, no
+/// validation message from the teardown under a frame in flight, and no
+/// output file.
+#[test]
+fn a_lost_device_or_exhausted_memory_is_one_error_line_not_a_crash() {
+    let dir = scratch();
+    for (fault, says) in [
+        ("device-lost", "the GPU device was lost"),
+        ("out-of-device-memory", "the GPU ran out of memory"),
+        ("alloc:bloom", "allocating memory for `bloom"),
+        (
+            "alloc:raymarch params",
+            "allocating memory for `raymarch params",
+        ),
+    ] {
+        let out = path_in(&dir, "lost.png");
+        let mut c = blackhole();
+        c.env("BLACKHOLE_FAULT", fault)
+            .args(["render", "--width", "320", "--height", "180", "--out"])
+            .arg(&out);
+        let (code, _, stderr) = run(c);
+        assert_eq!(code, 1, "{fault}: {stderr}");
+        let errors: Vec<&str> = stderr.lines().filter(|l| l.starts_with("error")).collect();
+        assert_eq!(errors.len(), 1, "{fault}: {stderr}");
+        assert!(errors[0].contains(says), "{fault}: {stderr}");
+        assert!(
+            !stderr.contains("panicked") && !stderr.contains("VALIDATION"),
+            "{fault}: {stderr}"
+        );
+        assert!(!out.exists(), "{fault}");
+    }
+}

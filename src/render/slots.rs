@@ -72,6 +72,16 @@ impl FrameSlot {
     /// resources are free to reuse.
     pub fn wait(&mut self) -> Result<Option<FrameTimings>> {
         let t = Instant::now();
+        if self.pending
+            && let Some(result) = crate::vk::fault::wait_fault()
+        {
+            // Injected (tests): fail while the frame is still running.
+            let e = Error::Vulkan {
+                what: "BLACKHOLE_FAULT".into(),
+                result,
+            };
+            return Err(self.failed_in(e));
+        }
         if let Err(e) = self.commands.wait() {
             return Err(self.failed_in(e));
         }
@@ -158,17 +168,11 @@ impl FrameSlot {
             other => format!("the frame failed ({other})"),
         };
         let count = graph::execute::timestamp_count(self.timed.len());
-        let running = self
+        let done = self
             .timestamps
             .as_ref()
-            .and_then(|ts| ts.written(count).ok())
-            .and_then(|done| {
-                self.timed
-                    .iter()
-                    .enumerate()
-                    .find(|(i, _)| !done.get(2 * i + 1).copied().unwrap_or(false))
-                    .map(|(_, n)| n.clone())
-            });
+            .and_then(|ts| ts.written_early(count).ok().flatten());
+        let running = done.and_then(|d| running_pass(&self.timed, &d));
         let what = match running {
             Some(pass) => format!("{why}, in pass `{pass}`"),
             None => why,
@@ -215,4 +219,39 @@ impl Drop for FrameSlot {
 /// Milliseconds since `t`.
 pub fn ms_since(t: Instant) -> f64 {
     t.elapsed().as_secs_f64() * 1e3
+}
+
+/// The pass a failed frame was in: the first of `timed` (the frame's timed
+/// passes in order) whose end timestamp `done` (availability of each pass's
+/// begin and end query) does not show as written. None when every pass ended
+/// (the failure came after them) or when `done` does not cover the passes.
+fn running_pass<'a>(timed: &'a [String], done: &[bool]) -> Option<&'a str> {
+    if done.len() < 2 * timed.len() {
+        return None;
+    }
+    timed
+        .iter()
+        .enumerate()
+        .find(|(i, _)| !done[2 * i + 1])
+        .map(|(_, n)| n.as_str())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::running_pass;
+
+    #[test]
+    fn the_failed_pass_is_the_first_whose_end_was_not_written() {
+        let timed: Vec<String> = ["raymarch", "bloom", "composite"]
+            .iter()
+            .map(|s| s.to_string())
+            .collect();
+        // raymarch ended, bloom began but did not end.
+        let done = [true, true, true, false, false, false];
+        assert_eq!(running_pass(&timed, &done), Some("bloom"));
+        assert_eq!(running_pass(&timed, &[false; 6]), Some("raymarch"));
+        assert_eq!(running_pass(&timed, &[true; 6]), None);
+        // Nothing known: no pass is named rather than a wrong one.
+        assert_eq!(running_pass(&timed, &[]), None);
+    }
 }

@@ -16,6 +16,12 @@ pub fn allocate(
     location: MemoryLocation,
     linear: bool,
 ) -> Result<Allocation> {
+    if super::fault::alloc_fault(name) {
+        return Err(Error::Allocation {
+            what: format!("allocating memory for `{name}` (BLACKHOLE_FAULT)"),
+            source: gpu_allocator::AllocationError::OutOfMemory,
+        });
+    }
     gpu.allocator()
         .allocate(&AllocationCreateDesc {
             name,

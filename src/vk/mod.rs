@@ -5,6 +5,7 @@ pub mod buffer;
 pub mod commands;
 pub mod descriptors;
 pub mod device;
+pub mod fault;
 pub mod image;
 pub mod instance;
 pub mod memory;
