@@ -207,7 +207,7 @@ const int VOLUME_SAMPLES = 12;
 void volume_crossing(LightPath path, float phi_j, float tilt, vec2 inside, vec3 c, vec3 e1,
                      vec3 e2, float rs, float lambda, inout Hit hit) {
     float H = P.vol0.x;
-    float r_j = rs / path_u_coarse(path, clamp(phi_j, 0.0, path.phi_end));
+    float r_j = rs / path_u(path, clamp(phi_j, 0.0, path.phi_end));
     // At most half-way to the neighbouring crossings, so no angle is counted
     // twice when the path stays in the slab from one crossing to the next.
     float half_width = min(1.3 * asin(min(H / max(tilt * r_j, 1e-6), 1.0)), 0.5 * PI);
@@ -219,7 +219,7 @@ void volume_crossing(LightPath path, float phi_j, float tilt, vec2 inside, vec3 
     vec3 pts[5];
     for (int k = 0; k < 5; ++k) {
         float phi = mix(a, b, 0.25 * float(k));
-        float u = max(path_u_coarse(path, phi), 1e-6);
+        float u = max(path_u(path, phi), 1e-6);
         pts[k] = c + (rs / u) * (cos(phi) * e1 + sin(phi) * e2);
     }
     vec4 len = vec4(length(pts[1] - pts[0]), length(pts[2] - pts[1]),
@@ -264,7 +264,7 @@ float light_travel_time(LightPath path, float phi, float b, float rs) {
     float h = phi / float(N);
     float sum = 0.0;
     for (int i = 0; i <= N; ++i) {
-        float u = max(path_u_coarse(path, h * float(i)), 1e-6);
+        float u = max(path_u(path, h * float(i)), 1e-6);
         float r = rs / u;
         float f = r * r / (b * max(1.0 - u, 1e-3));
         float w = (i == 0 || i == N) ? 1.0 : ((i & 1) == 1 ? 4.0 : 2.0);

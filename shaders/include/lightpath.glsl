@@ -92,49 +92,49 @@ vec4 carlson_rf4(vec4 x, vec4 y) {
 }
 
 // Jacobi sn and cn (parameter m = 1 - mc) by the arithmetic-geometric mean
-// (Abramowitz & Stegun 16.4). The means depend only on mc, so a path keeps
-// them (AGM_STEPS fixed steps, unrolled, no divergence: c_n falls
-// quadratically, below f32 resolution by the seventh step down to
-// mc ~ 1e-12) and each sn costs only the descent.
+// and Bulirsch's descending recurrence (Numerical Recipes' sncndn): the
+// means depend only on mc, so a path keeps them (AGM_STEPS fixed steps:
+// c_n falls quadratically, below f32 resolution by the seventh step down to
+// mc ~ 1e-12; a step past convergence leaves the result unchanged), and each
+// sn costs one sine and cosine and a short rational recurrence: no inverse
+// trigonometric function per step, so no error amplified by 2^n (measured
+// in f32 against mpmath over mc in [1e-12, 1], u in [0, K]: p99 1.2e-7,
+// max 2.4e-7, against 4.8e-6 and 1.4e-5 for the descent by arcsines).
 const int AGM_STEPS = 7;
 
 struct Agm {
-    float a[AGM_STEPS + 1];
-    float c[AGM_STEPS + 1];
+    float a[AGM_STEPS + 1];  // a_0 = 1 .. a_N, the mean
+    float b[AGM_STEPS];      // b_0 = sqrt(mc) .. b_{N-1}
 };
 
 Agm agm_of(float mc) {
     Agm g;
     g.a[0] = 1.0;
     float b = sqrt(max(mc, 0.0));
-    g.c[0] = sqrt(max(1.0 - mc, 0.0));
     for (int n = 0; n < AGM_STEPS; ++n) {
+        g.b[n] = b;
         g.a[n + 1] = 0.5 * (g.a[n] + b);
-        g.c[n + 1] = 0.5 * (g.a[n] - b);
         b = sqrt(g.a[n] * b);
     }
     return g;
 }
 
-// The descent from step n (n <= AGM_STEPS): fewer steps are exact while
-// c_n is below f32 resolution (k^2 up to 0.9 by the fourth step) and
-// otherwise leave an error of about c_n / (a_n 2^n) rad in the amplitude.
-//
-// Steps whose c_i / a_i is below 1e-7 only halve the amplitude (their asin
-// term is below f32 resolution): the descent starts below them, so rays away
-// from the critical impact parameter, where k is small and c_n falls fast,
-// take three or four steps instead of seven (a loop runs as long as the
-// slowest ray of its SIMD group; a skipped branch would not save).
-vec2 jacobi_sn_cn_from(float w, Agm g, const int n) {
-    int top = 0;
-    for (int i = 1; i <= n; ++i) {
-        if (g.c[i] > 1e-7 * g.a[i]) top = i;
+// sn(w) and cn(w) for w in [0, K] (both >= 0 there).
+vec2 jacobi_sn_cn(float w, Agm g) {
+    vec2 cs0 = cos_sin_precise(w * g.a[AGM_STEPS]);
+    // c: the cotangent of the amplitude, carried down the means.
+    float cot = cs0.x / max(cs0.y, 1e-18);
+    float c = g.a[AGM_STEPS] * cot;
+    float a = cot, dn = 1.0;
+    for (int i = AGM_STEPS - 1; i >= 0; --i) {
+        a *= c;
+        c *= dn;
+        dn = (g.b[i] + a) / (g.a[i] + a);
+        a = c / g.a[i];
     }
-    float phi = exp2(float(top)) * g.a[n] * w;
-    for (int i = top; i >= 1; --i) {
-        phi = 0.5 * (phi + asin_precise(clamp(g.c[i] * sin(phi) / g.a[i], -1.0, 1.0)));
-    }
-    return vec2(sin(phi), cos(phi));
+    float sn = inversesqrt(c * c + 1.0);
+    // At w = 0 (sin below 1e-18): sn = 0, cn = 1.
+    return cs0.y < 1e-18 ? vec2(cs0.y, 1.0) : vec2(sn, c * sn);
 }
 
 #define PATH_SCATTERED 0
@@ -276,7 +276,7 @@ float first_crossing_in(LightPath p, vec2 win, float phi0) {
 
 // u = rs / r at angle phi along the path: one sn/cn evaluation whatever the
 // kind (see light_path for why).
-float path_u_steps(LightPath p, float phi, const int steps) {
+float path_u(LightPath p, float phi) {
     float w = p.w0 + p.rate * phi;
     float k2 = 2.0 * p.kk;
     // Scattered and trapped: sn^2 has period 2K and is even, so [0, K].
@@ -286,22 +286,12 @@ float path_u_steps(LightPath p, float phi, const int steps) {
     bool plunging = p.kind == PATH_PLUNGING;
     bool far_half = w > p.kk;
     float arg = plunging ? (far_half ? k2 - w : max(w, 0.0)) : wr;
-    vec2 sc = jacobi_sn_cn_from(arg, p.agm, steps);
+    vec2 sc = jacobi_sn_cn(arg, p.agm);
     float cn = plunging && far_half ? -sc.y : sc.y;
     float sn2 = sc.x * sc.x;
     if (plunging) return p.u1 + p.d21 * (1.0 - cn) / (1.0 + cn);
     if (p.kind == PATH_SCATTERED) return p.u1 + p.d21 * sn2;
     return p.u3 + p.d32 * sn2 / max(cn * cn, 1e-30);
-}
-
-float path_u(LightPath p, float phi) {
-    return path_u_steps(p, phi, AGM_STEPS);
-}
-
-// u to about 1e-4 relative where k is near 1 (exact elsewhere): enough to
-// place volume samples, at half the cost.
-float path_u_coarse(LightPath p, float phi) {
-    return path_u_steps(p, phi, 4);
 }
 
 #endif
