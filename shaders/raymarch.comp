@@ -361,10 +361,13 @@ Hit trace_planar(vec3 x, vec3 d) {
             // evaluation of the path each. Where the disk is thin (its
             // structure, its opacity) the light behind comes through: the
             // next crossing (THIN_CROSSINGS = 2), then the sky.
+            // A loop, not two calls: on a CPU driver a branch costs every
+            // lane, taken or not, but a loop's later turns run only while a
+            // lane of the SIMD group still needs them (the first always runs).
             float next = phi0 <= 1e-6 ? phi0 + PI : phi0;  // the next crossing ahead
-            if (thin_crossing(path, next, c, e1, e2, rs, lambda, b_imp, hit)) return hit;
-            if (THIN_CROSSINGS > 1 && next < 1e29) {
+            for (int k = 0; k < THIN_CROSSINGS; ++k) {
                 if (thin_crossing(path, next, c, e1, e2, rs, lambda, b_imp, hit)) return hit;
+                if (next >= 1e29) break;
             }
         } else if (volumetric()) {
             // From the crossing behind the camera when the camera is in the
