@@ -67,28 +67,35 @@ float asinh_precise(float x) {
 }
 
 // R_F(x, y, 1) for four argument pairs at once: one loop instead of four
-// (every integral this file needs has z = 1).
+// (every integral this file needs has z = 1). Duplication (each turn brings
+// x, y, z four times closer together) until all are within 0.2 of their
+// mean, then Carlson's series to seventh order (DLMF 19.36.1), whose error
+// there is below f32 resolution. Measured in f32 against mpmath over x, y in
+// [0, 1.5] down to 1e-7: relative error at most 2.4e-7, 2.8 turns on
+// average (3.8 with a fifth-order series from 0.05). The loop holds only the
+// duplication: on a CPU driver a loop's body runs for the whole SIMD group
+// each turn, so the series waits until after it.
 vec4 carlson_rf4(vec4 x, vec4 y) {
     vec4 z = vec4(1.0);
     for (int i = 0; i < 16; ++i) {
         vec4 a = (x + y + z) * (1.0 / 3.0);
-        vec4 ia = 1.0 / a;
-        vec4 dx = 1.0 - x * ia, dy = 1.0 - y * ia, dz = 1.0 - z * ia;
-        vec4 dm = max(abs(dx), max(abs(dy), abs(dz)));
-        // Relative error below dm^6 / 4: 4e-9 at 0.05.
-        if (max(max(dm.x, dm.y), max(dm.z, dm.w)) < 0.05) {
-            vec4 e2 = dx * dy - dz * dz;
-            vec4 e3 = dx * dy * dz;
-            return (1.0 - e2 * 0.1 + e3 * (1.0 / 14.0) + e2 * e2 * (1.0 / 24.0)
-                    - e2 * e3 * (3.0 / 44.0)) * inversesqrt(a);
-        }
+        vec4 dm = max(abs(a - x), max(abs(a - y), abs(a - z))) - 0.2 * a;
+        if (max(max(dm.x, dm.y), max(dm.z, dm.w)) < 0.0) break;
         vec4 sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
         vec4 l = sx * (sy + sz) + sy * sz;
         x = 0.25 * (x + l);
         y = 0.25 * (y + l);
         z = 0.25 * (z + l);
     }
-    return inversesqrt((x + y + z) * (1.0 / 3.0));
+    vec4 a = (x + y + z) * (1.0 / 3.0);
+    vec4 ia = 1.0 / a;
+    vec4 dx = 1.0 - x * ia, dy = 1.0 - y * ia, dz = 1.0 - z * ia;
+    vec4 e2 = dx * dy - dz * dz;
+    vec4 e3 = dx * dy * dz;
+    vec4 series = 1.0 - e2 * 0.1 + e3 * (1.0 / 14.0) + e2 * e2 * (1.0 / 24.0)
+                - e2 * e3 * (3.0 / 44.0) - e2 * e2 * e2 * (5.0 / 208.0)
+                + e3 * e3 * (3.0 / 104.0) + e2 * e2 * e3 * (1.0 / 16.0);
+    return series * inversesqrt(a);
 }
 
 // Jacobi sn and cn (parameter m = 1 - mc) by the arithmetic-geometric mean
