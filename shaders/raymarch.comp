@@ -276,8 +276,13 @@ float light_travel_time(LightPath path, float phi, float b, float rs) {
 // The thin disk's first crossing inside the annulus from angle `next` on
 // (advanced past it): its light added to the hit, weighted by its opacity.
 // True when the ray ends there (opaque, or the AOV's first hit).
-bool thin_crossing(LightPath path, inout float next, vec3 c, vec3 e1, vec3 e2, float rs,
-                   float lambda, float b_imp, inout Hit hit) {
+//
+// Every crossing lies on the line of nodes (where the orbit plane meets the
+// disk plane), at angle phi0 + j pi: its direction from the hole is
+// (-1)^j `node`, and its azimuth az0 + j pi, so no sine, cosine or
+// arctangent is needed per crossing.
+bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 node, float az0,
+                   float rs, float lambda, float b_imp, inout Hit hit) {
     float phi = min(first_crossing_in(path, path.win_a, next),
                     first_crossing_in(path, path.win_b, next));
     if (phi >= 1e29) {
@@ -288,7 +293,9 @@ bool thin_crossing(LightPath path, inout float next, vec3 c, vec3 e1, vec3 e2, f
     float r = rs / path_u(path, phi);
     // The windows' edges are rounded; the radius decides.
     if (r < P.disk.x || r > P.disk.y) return false;
-    vec3 pos = c + r * (cos(phi) * e1 + sin(phi) * e2);
+    float j = round((phi - phi0) * (1.0 / PI));
+    float odd = j - 2.0 * floor(0.5 * j);
+    vec3 pos = c + (r * (1.0 - 2.0 * odd)) * node;
     float omega = sqrt(0.5 * rs / (r * r * r));
     float g = sqrt(max(1.0 - 1.5 * rs / r, 0.0)) / (1.0 - omega * lambda);
 #ifdef GEODESIC_AOV
@@ -299,7 +306,7 @@ bool thin_crossing(LightPath path, inout float next, vec3 c, vec3 e1, vec3 e2, f
 #else
     float t = P.vol1.y;
     if (LIGHT_DELAY) t -= P.disk_look.z * light_travel_time(path, phi, b_imp, rs);
-    float dens = THIN_STRUCTURE ? thin_disk_density(r, disk_azimuth(pos), t) : 1.0;
+    float dens = THIN_STRUCTURE ? thin_disk_density(r, az0 + odd * PI, t) : 1.0;
     float alpha = clamp(P.disk_look.y * dens, 0.0, 1.0);
     hit.glow += hit.trans * alpha * dens * disk_color(r, g * observer_g);
     hit.trans *= 1.0 - alpha;
@@ -365,8 +372,10 @@ Hit trace_planar(vec3 x, vec3 d) {
             // lane, taken or not, but a loop's later turns run only while a
             // lane of the SIMD group still needs them (the first always runs).
             float next = phi0 <= 1e-6 ? phi0 + PI : phi0;  // the next crossing ahead
+            vec3 node = (nb * e1 - na * e2) / tilt;          // cos(phi0) e1 + sin(phi0) e2
+            float az0 = THIN_STRUCTURE ? disk_azimuth(c + node) : 0.0;
             for (int k = 0; k < THIN_CROSSINGS; ++k) {
-                if (thin_crossing(path, next, c, e1, e2, rs, lambda, b_imp, hit)) return hit;
+                if (thin_crossing(path, next, phi0, c, node, az0, rs, lambda, b_imp, hit)) return hit;
                 if (next >= 1e29) break;
             }
         } else if (volumetric()) {

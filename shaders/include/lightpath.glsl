@@ -112,6 +112,7 @@ const int AGM_STEPS = 7;
 struct Agm {
     float a[AGM_STEPS + 1];  // a_0 = 1 .. a_N, the mean
     float b[AGM_STEPS];      // b_0 = sqrt(mc) .. b_{N-1}
+    float inv_a[AGM_STEPS];  // 1 / a_0 .. 1 / a_{N-1}
 };
 
 Agm agm_of(float mc) {
@@ -120,6 +121,7 @@ Agm agm_of(float mc) {
     float b = sqrt(max(mc, 0.0));
     for (int n = 0; n < AGM_STEPS; ++n) {
         g.b[n] = b;
+        g.inv_a[n] = 1.0 / g.a[n];
         g.a[n + 1] = 0.5 * (g.a[n] + b);
         b = sqrt(g.a[n] * b);
     }
@@ -137,7 +139,7 @@ vec2 jacobi_sn_cn(float w, Agm g) {
         a *= c;
         c *= dn;
         dn = (g.b[i] + a) / (g.a[i] + a);
-        a = c / g.a[i];
+        a = c * g.inv_a[i];
     }
     float sn = inversesqrt(c * c + 1.0);
     // At w = 0 (sin below 1e-18): sn = 0, cn = 1.
