@@ -17,6 +17,9 @@ pub struct SkyTexture {
     pub width: u32,
     pub height: u32,
     pub levels: Vec<Vec<[f32; 4]>>,
+    /// Kept as 32-bit floats on the GPU (the star grid's packed places);
+    /// otherwise half floats, plenty for light.
+    pub full_precision: bool,
 }
 
 fn srgb_to_linear(c: f32) -> f32 {
@@ -110,6 +113,7 @@ fn with_mips(width: u32, height: u32, base: Vec<[f32; 4]>) -> SkyTexture {
         width,
         height,
         levels,
+        full_precision: false,
     }
 }
 

@@ -9,15 +9,16 @@
 //!
 //! For the GPU the stars are binned into a grid on the faces of a cube in
 //! galactic coordinates (`GRID` x `GRID` cells a face): each cell keeps its
-//! brightest star's place inside the cell, the flux of all its stars and
-//! their flux-weighted colour temperature. Coarser mip levels merge 2x2
-//! cells (flux summed, place and temperature flux-weighted), so a pixel whose
+//! stars' flux-weighted place inside the cell and their light (flux times
+//! colour, summed). Coarser mip levels merge 2x2 cells (light summed, place
+//! flux-weighted), so a pixel whose
 //! footprint on the sky is wide reads one coarse cell instead of many fine
 //! ones. The shader (`sky.glsl`, `sky_catalogue`) draws each star as a
 //! Gaussian as wide as the pixel's footprint with its flux fixed.
 
 use glam::{DMat3, DVec3};
 
+use crate::physics::blackbody::{LUT_MAX_K, LUT_MIN_K, LUT_SIZE};
 use crate::{Error, Result};
 
 /// The embedded table.
@@ -166,14 +167,49 @@ pub fn cube_face(d: DVec3) -> (usize, f64, f64) {
     }
 }
 
+/// Steps of a cell's light place along u in a packed texel (see
+/// [`pack_place`]).
+pub const PLACE_STEPS: f64 = 4095.0;
+
+/// The place of a cell's light inside the cell (u, v in [0, 1]) packed into
+/// one float: the integer part is u in 4095ths, the fraction v in 4096ths
+/// (a cell at level 0 is about half a degree, so both are good to 1e-4
+/// degree). The shader unpacks it in `sky_catalogue`.
+pub fn pack_place(u: f64, v: f64) -> f32 {
+    ((u.clamp(0.0, 1.0) * PLACE_STEPS).round() + v.clamp(0.0, 1.0) * (4095.0 / 4096.0)) as f32
+}
+
+/// The inverse of [`pack_place`].
+pub fn unpack_place(p: f32) -> (f64, f64) {
+    let p = f64::from(p);
+    let whole = p.floor();
+    (whole / PLACE_STEPS, (p - whole) * (4096.0 / 4095.0))
+}
+
+/// Linear sRGB colour of luminance 1 of a blackbody at `t` kelvin, from the
+/// colour table by linear interpolation in log T (as the disk's colours).
+fn star_colour(lut: &[[f32; 4]], t: f64) -> [f64; 3] {
+    let x = ((t.max(1.0).ln() - LUT_MIN_K.ln()) / (LUT_MAX_K.ln() - LUT_MIN_K.ln())
+        * LUT_SIZE as f64
+        - 0.5)
+        .clamp(0.0, LUT_SIZE as f64 - 1.0);
+    let i = (x.floor() as usize).min(LUT_SIZE - 2);
+    let f = x - i as f64;
+    let (a, b) = (lut[i], lut[i + 1]);
+    [0, 1, 2].map(|k| f64::from(a[k]) + f * (f64::from(b[k]) - f64::from(a[k])))
+}
+
 /// The star grid with its mips, level 0 first: each level is (6 n) x n
 /// RGBA texels (faces side by side), a texel holding the place of the
-/// cell's light inside the cell (u, v in [0, 1]), its flux relative to a
-/// magnitude-0 star and its flux-weighted colour temperature (kelvin).
+/// cell's light inside the cell ([`pack_place`]) and the light of its stars:
+/// the sum of each star's flux (relative to a magnitude-0 star) times its
+/// colour of luminance 1, in linear sRGB. So the luminance of a texel's
+/// light is its flux, and the shader needs no colour lookup.
 pub fn star_grid(stars: &[Star]) -> Vec<Vec<[f32; 4]>> {
     let n = GRID as usize;
-    // Flux-weighted sums per cell: (flux, flux * u, flux * v, flux * T).
-    let mut sums = vec![[0.0f64; 4]; 6 * n * n];
+    let lut = crate::physics::blackbody::lut_rgba();
+    // Sums per cell: (flux, flux * u, flux * v, flux * R, flux * G, flux * B).
+    let mut sums = vec![[0.0f64; 6]; 6 * n * n];
     for s in stars {
         let g = to_galactic(equatorial_vector(s.ra, s.dec));
         let (face, u, v) = cube_face(g);
@@ -181,11 +217,14 @@ pub fn star_grid(stars: &[Star]) -> Vec<Vec<[f32; 4]>> {
         let gv = ((v * 0.5 + 0.5) * n as f64).clamp(0.0, n as f64 - 1e-9);
         let (cu, cv) = (gu.floor(), gv.floor());
         let flux = 10f64.powf(-0.4 * s.mag);
+        let colour = star_colour(&lut, temperature_from_bv(s.bv));
         let cell = &mut sums[v_index(face, cu as usize, cv as usize, n)];
         cell[0] += flux;
         cell[1] += flux * (gu - cu);
         cell[2] += flux * (gv - cv);
-        cell[3] += flux * temperature_from_bv(s.bv);
+        for k in 0..3 {
+            cell[3 + k] += flux * colour[k];
+        }
     }
     let mut levels = Vec::new();
     let mut size = n;
@@ -195,13 +234,13 @@ pub fn star_grid(stars: &[Star]) -> Vec<Vec<[f32; 4]>> {
                 .map(|c| {
                     if c[0] > 0.0 {
                         [
-                            (c[1] / c[0]) as f32,
-                            (c[2] / c[0]) as f32,
-                            c[0] as f32,
-                            (c[3] / c[0]) as f32,
+                            pack_place(c[1] / c[0], c[2] / c[0]),
+                            c[3] as f32,
+                            c[4] as f32,
+                            c[5] as f32,
                         ]
                     } else {
-                        [0.5, 0.5, 0.0, 0.0]
+                        [pack_place(0.5, 0.5), 0.0, 0.0, 0.0]
                     }
                 })
                 .collect(),
@@ -211,7 +250,7 @@ pub fn star_grid(stars: &[Star]) -> Vec<Vec<[f32; 4]>> {
         }
         // Merge 2x2 cells; places move to the parent's cell units.
         let half = size / 2;
-        let mut next = vec![[0.0f64; 4]; 6 * half * half];
+        let mut next = vec![[0.0f64; 6]; 6 * half * half];
         for face in 0..6 {
             for y in 0..size {
                 for x in 0..size {
@@ -223,7 +262,9 @@ pub fn star_grid(stars: &[Star]) -> Vec<Vec<[f32; 4]>> {
                     p[0] += c[0];
                     p[1] += 0.5 * (c[1] + c[0] * (x % 2) as f64);
                     p[2] += 0.5 * (c[2] + c[0] * (y % 2) as f64);
-                    p[3] += c[3];
+                    for k in 3..6 {
+                        p[k] += c[k];
+                    }
                 }
             }
         }
@@ -296,12 +337,51 @@ mod tests {
         let grid = star_grid(&stars);
         assert_eq!(grid.len(), 9);
         for level in &grid {
-            let sum: f64 = level.iter().map(|t| f64::from(t[2])).sum();
+            // The light's luminance is the flux (colours have luminance 1).
+            let sum: f64 = level
+                .iter()
+                .map(|t| {
+                    0.212_639 * f64::from(t[1])
+                        + 0.715_169 * f64::from(t[2])
+                        + 0.072_192 * f64::from(t[3])
+                })
+                .sum();
             assert!((sum / total - 1.0).abs() < 1e-4, "{sum} vs {total}");
+            assert!(level.iter().all(|t| {
+                let (u, v) = unpack_place(t[0]);
+                (0.0..=1.0).contains(&u) && (0.0..=1.0).contains(&v)
+            }));
+        }
+    }
+
+    #[test]
+    fn a_place_survives_packing_to_a_ten_thousandth_of_a_cell() {
+        for (u, v) in [
+            (0.0, 0.0),
+            (1.0, 1.0),
+            (0.1234, 0.8765),
+            (0.5, 0.999),
+            (0.999, 0.001),
+        ] {
+            let (pu, pv) = unpack_place(pack_place(u, v));
             assert!(
-                level
-                    .iter()
-                    .all(|t| (0.0..=1.0).contains(&t[0]) && (0.0..=1.0).contains(&t[1]))
+                (pu - u).abs() < 2e-4 && (pv - v).abs() < 3e-4,
+                "{u} {v} -> {pu} {pv}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_star_s_colour_follows_its_temperature() {
+        let lut = crate::physics::blackbody::lut_rgba();
+        let (red, blue) = (star_colour(&lut, 3_000.0), star_colour(&lut, 20_000.0));
+        assert!(red[0] > red[2] && blue[2] > blue[0]);
+        let exact = crate::physics::blackbody::blackbody_srgb(5_800.0);
+        let table = star_colour(&lut, 5_800.0);
+        for k in 0..3 {
+            assert!(
+                (exact[k] - table[k]).abs() < 1e-3 * exact[k].max(0.1),
+                "{exact:?} {table:?}"
             );
         }
     }

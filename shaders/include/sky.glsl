@@ -124,8 +124,8 @@ vec3 sky_stars(vec3 d, float pixel_angle) {
 
 // The real sky (src/stars.rs): the Hipparcos stars binned on the faces of a
 // cube in galactic coordinates, one texel per cell (the place of its light
-// in the cell, its flux relative to a magnitude-0 star, its colour
-// temperature), with mips that merge 2x2 cells.
+// in the cell, its stars' flux relative to a magnitude-0 star times their
+// colour), with mips that merge 2x2 cells.
 //
 // Each star is drawn where the lensing puts it and as the lensing shapes
 // it: the pixel's footprint (the ray differentials A = [f.x f.y], the final
@@ -182,20 +182,22 @@ vec3 sky_catalogue(vec3 dw, Footprint f) {
     mat2 ata_inv = mat2(m22, -m12, -m12, m11) / det;
     mat2 atj = mat2(dot(ax, du), dot(ay, du), dot(ax, dv), dot(ay, dv));
     mat2 q = ata_inv * atj;
-    float flux_sum = 0.0, temp_sum = 0.0;
+    vec3 light = vec3(0.0);
     for (int j = 0; j <= 1; ++j) {
         for (int i = 0; i <= 1; ++i) {
             vec2 c = clamp(cell + vec2(i, j) * side, vec2(0.0), vec2(n - 1.0));
             // Clamped at a face's edge: the same cell twice, counted once.
             if ((i == 1 && c.x == cell.x) || (j == 1 && c.y == cell.y)) continue;
+            // x: the light's place in the cell (integer part u in 4095ths,
+            // fraction v in 4096ths); yzw: the stars' light (src/stars.rs).
             vec4 t = texelFetch(sky_tex, ivec2(int(face) * int(n) + int(c.x), int(c.y)), int(level));
-            vec2 p = q * (c + t.xy - g);
-            float w = exp(-0.5 * dot(p, p) / (SIGMA * SIGMA)) / (6.2831853 * SIGMA * SIGMA * area);
-            flux_sum += t.z * w;
-            temp_sum += t.z * w * t.w;
+            float pu = floor(t.x);
+            vec2 place = vec2(pu * (1.0 / 4095.0), (t.x - pu) * (4096.0 / 4095.0));
+            vec2 p = q * (c + place - g);
+            light += exp(-0.5 / (SIGMA * SIGMA) * dot(p, p)) * t.yzw;
         }
     }
-    vec3 stars = flux_sum > 1e-12 ? blackbody(temp_sum / flux_sum) * (flux_sum * P.sky_m0.w) : vec3(0.0);
+    vec3 stars = light * (P.sky_m0.w / (6.2831853 * SIGMA * SIGMA * area));
     float cos_l = d.x * inversesqrt(max(dot(d.xy, d.xy), 1e-12));
     float toward_centre = 0.5 + 0.5 * cos_l;
     float width = 0.07 + 0.08 * toward_centre * toward_centre;

@@ -87,6 +87,7 @@ impl SceneResources {
                     width: 6 * n,
                     height: n,
                     levels: crate::stars::star_grid(&stars),
+                    full_precision: true,
                 }
             }
             _ => crate::sky::load_equirect(
@@ -198,13 +199,32 @@ fn upload_sky(
     transients: &mut TransientPool,
     texture: &crate::sky::SkyTexture,
 ) -> Result<Image> {
+    let levels = &texture.levels[..];
+    if texture.full_precision {
+        let desc = ImageDesc::new_2d(
+            vk::Format::R32G32B32A32_SFLOAT,
+            texture.width,
+            texture.height,
+        )
+        .with_mips(levels.len() as u32);
+        let texels: Vec<[f32; 4]> = levels.iter().flatten().copied().collect();
+        return upload_image(
+            gpu,
+            commands,
+            transients,
+            "sky",
+            desc,
+            bytemuck::cast_slice(&texels),
+            16,
+        );
+    }
     let desc = ImageDesc::new_2d(
         vk::Format::R16G16B16A16_SFLOAT,
         texture.width,
         texture.height,
     )
-    .with_mips(texture.levels.len() as u32);
-    let halves: Vec<half::f16> = texture.levels[..desc.mip_levels as usize]
+    .with_mips(levels.len() as u32);
+    let halves: Vec<half::f16> = levels
         .iter()
         .flatten()
         .flat_map(|t| t.map(half::f16::from_f32))
