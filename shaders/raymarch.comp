@@ -30,6 +30,9 @@ layout(constant_id = 4) const bool LIGHT_DELAY = false;
 layout(constant_id = 5) const bool THIN_STRUCTURE = false;
 // Thin-disk crossings a ray may see (2 when the disk lets light through).
 layout(constant_id = 6) const int THIN_CROSSINGS = 1;
+// The volumetric disk glows as a blackbody at its shifted temperature (else
+// the film's colour map).
+layout(constant_id = 7) const bool VOLUME_BLACKBODY = false;
 
 #include "params.glsl"
 #include "geodesic.glsl"
@@ -56,6 +59,9 @@ vec3 blackbody(float t) {
 layout(binding = 3) uniform sampler2D sky_tex;
 // The thin disk's tileable noise (src/render/resources.rs, `disk_noise`).
 layout(binding = 4) uniform sampler2D disk_noise;
+// The volumetric disk's noise volume, three octaves in r, g, b
+// (src/render/resources.rs, `volume_noise`).
+layout(binding = 5) uniform sampler3D volume_noise;
 
 #include "sky.glsl"
 
@@ -83,7 +89,6 @@ vec3 disk_color(float r, float g_full) {
     return c * (P.disk.z * gt * gt * gt * gt);
 }
 
-#include "noise.glsl"
 #include "volume.glsl"
 
 // The thin disk's structure: its density (mean about 1) at radius r and
@@ -226,7 +231,6 @@ void volume_crossing(LightPath path, float phi_j, float tilt, vec2 inside, vec3 
                     length(pts[3] - pts[2]), length(pts[4] - pts[3]));
     vec4 ends = vec4(len.x, len.x + len.y, len.x + len.y + len.z, len.x + len.y + len.z + len.w);
     float ds = ends.w / float(VOLUME_SAMPLES);
-    bool blackbody_mode = P.vol1.w > 0.5;
     for (int s = 0; s < VOLUME_SAMPLES; ++s) {
         float t = (float(s) + volume_jitter) * ds;
         // Which chord holds t, and where along it (selects, not dynamic
@@ -240,7 +244,7 @@ void volume_crossing(LightPath path, float phi_j, float tilt, vec2 inside, vec3 
         float r;
         float dens = volume_density(p, r);
         vec3 emit;
-        if (blackbody_mode) {
+        if (VOLUME_BLACKBODY) {
             float omega = sqrt(0.5 * rs / (r * r * r));
             float g = sqrt(max(1.0 - 1.5 * rs / r, 1e-4)) / (1.0 - omega * lambda);
             emit = disk_color(max(r, 1.0001 * P.disk.x), g * observer_g);

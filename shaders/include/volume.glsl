@@ -2,11 +2,18 @@
 // gas around the first hole whose density falls with height and radius, cut
 // into filaments by several octaves of 3-D simplex noise that turn with the
 // Keplerian angular velocity of their radius (so the inner parts shear ahead
-// of the outer ones). Light is gathered along each integration step by
+// of the outer ones). The noise is read from a precomputed tileable volume
+// (src/render/resources.rs, `volume_noise`), whose period is here. Light is gathered along each integration step by
 // emission-absorption: colour += T * emission * ds, T *= exp(-sigma ds).
-// Requires params.glsl, noise.glsl and disk_color() / disk shift helpers.
+// Requires params.glsl, the volume_noise sampler, VOLUME_BLACKBODY and
+// disk_color() / disk shift helpers.
 #ifndef VOLUME_GLSL
 #define VOLUME_GLSL
+
+// The noise volume's period in noise units (VOLUME_NOISE_PERIOD in
+// src/render/resources.rs).
+const float VOLUME_NOISE_PERIOD_XZ = 16.0;
+const float VOLUME_NOISE_PERIOD_Y = 8.0;
 
 // The film look's colour map: white-yellow inside to deep orange outside.
 vec3 volume_colormap(float r) {
@@ -39,13 +46,21 @@ float volume_density(vec3 p, out float r) {
     xz = vec2(ca * xz.x - sa * xz.y, sa * xz.x + ca * xz.y);
     vec3 np = vec3(xz.x, y * 4.0, xz.y) * P.vol0.w;
     // Fractal sum of octaves, then a contrast curve: filaments and gaps.
-    float noise = 0.0;
-    float amp = 1.0, freq = 1.0;
+    // The noise volume holds octaves 1 to 3 (one fetch); octaves 4 to 6 are
+    // the same volume at eight times the frequency. A loop, so a CPU driver
+    // runs the second fetch only when the scene asks for it.
     int octaves = int(P.vol1.x);
-    for (int i = 0; i < octaves; ++i) {
-        noise += amp * snoise(np * freq);
-        amp *= 0.5;
-        freq *= 2.0;
+    // Gradient noise's features are about 1.6 times the size of simplex
+    // noise's at the same frequency (what noise_scale was tuned on).
+    vec3 tc = np * (1.6 / vec3(VOLUME_NOISE_PERIOD_XZ, VOLUME_NOISE_PERIOD_Y, VOLUME_NOISE_PERIOD_XZ));
+    float noise = 0.0;
+    float amp = 1.0;
+    for (int i = 0; i < (octaves + 2) / 3; ++i) {
+        vec3 o = textureLod(volume_noise, tc, 0.0).rgb * 2.0 - 1.0;
+        int left = octaves - 3 * i;
+        noise += amp * dot(o, vec3(1.0, left > 1 ? 0.5 : 0.0, left > 2 ? 0.25 : 0.0));
+        amp *= 0.125;
+        tc *= 8.0;
     }
     return dens * clamp(0.55 + 0.9 * noise, 0.0, 2.0) * 3.0;
 }
@@ -62,7 +77,7 @@ const float VOLUME_DS = 0.2;
 // gradient; a hashed offset turns them into fine, stable grain.
 float volume_jitter = 0.5;
 
-// Gathers light along the chord from a to b. lambda: the photon's angular
+// Gathers light along the chord from a to b (the general path). lambda: the photon's angular
 // momentum about the disk axis (for the Doppler shift of each sample).
 void volume_segment(vec3 a, vec3 b, float lambda, inout vec3 acc, inout float trans) {
     vec3 n = P.disk_normal.xyz;
@@ -74,14 +89,13 @@ void volume_segment(vec3 a, vec3 b, float lambda, inout vec3 acc, inout float tr
     int count = int(clamp(ceil(len / VOLUME_DS), 1.0, 16.0));
     float ds = len / float(count);
     float rs = P.holes[0].w;
-    bool blackbody_mode = P.vol1.w > 0.5;
     for (int k = 0; k < count; ++k) {
         vec3 p = mix(a, b, (float(k) + volume_jitter) / float(count));
         float r;
         float dens = volume_density(p, r);
         if (dens <= 0.0) continue;
         vec3 emit;
-        if (blackbody_mode) {
+        if (VOLUME_BLACKBODY) {
             float omega = sqrt(0.5 * rs / (r * r * r));
             float g = sqrt(max(1.0 - 1.5 * rs / r, 1e-4)) / (1.0 - omega * lambda);
             emit = disk_color(max(r, 1.0001 * P.disk.x), g * observer_g);

@@ -78,10 +78,10 @@ pub fn add_upload(
                         image_extent: vk::Extent3D {
                             width: w,
                             height: h,
-                            depth: 1,
+                            depth: dst.desc.depth,
                         },
                     };
-                    offset += u64::from(w) * u64::from(h) * texel_bytes;
+                    offset += u64::from(w) * u64::from(h) * u64::from(dst.desc.depth) * texel_bytes;
                     region
                 })
                 .collect();

@@ -21,9 +21,10 @@ use crate::vk::{BindingKind, ComputePipeline, Gpu, Sampler};
 /// (1,000 frames at 160x90 took 640 MB; the same with a storage buffer, 120
 /// MB) and cost twice the time. Found by skipping one pass's dispatch at a
 /// time; the layout is the same (every member a vec4).
-const RAYMARCH_BINDINGS: [BindingKind; 5] = [
+const RAYMARCH_BINDINGS: [BindingKind; 6] = [
     BindingKind::StorageImage,
     BindingKind::StorageBuffer,
+    BindingKind::SampledImage,
     BindingKind::SampledImage,
     BindingKind::SampledImage,
     BindingKind::SampledImage,

@@ -213,16 +213,25 @@ impl RaymarchParams {
     }
 }
 
+/// The images every ray march reads, kept across frames
+/// (`render::resources`) and imported into each frame's graph.
+pub struct SceneImages {
+    pub disk_lut: ImageHandle,
+    /// The thin disk's tileable noise (`render::resources::disk_noise`).
+    pub disk_noise: ImageHandle,
+    /// The volumetric disk's noise volume (`render::resources::volume_noise`;
+    /// a 1x1x1 placeholder for other disks).
+    pub volume_noise: ImageHandle,
+    /// The image sky; the colour table again when the sky is not an image
+    /// (the binding must hold something; the shader never samples it).
+    pub sky: ImageHandle,
+}
+
 /// What the ray march reads: the host-written parameter block and the images.
 pub struct RaymarchInputs<'h> {
     /// The [`RaymarchParams`] buffer, written by the host this frame.
     pub params: &'h BufferHandle,
-    pub disk_lut: &'h ImageHandle,
-    /// The thin disk's tileable noise (`render::resources::disk_noise`).
-    pub disk_noise: &'h ImageHandle,
-    /// The image sky; the colour table again when the sky is not an image
-    /// (the binding must hold something; the shader never samples it).
-    pub sky: &'h ImageHandle,
+    pub images: &'h SceneImages,
     pub output: RaymarchOutput,
     /// Size of the image it writes (the window may render at a fraction).
     pub size: (u32, u32),
@@ -250,6 +259,9 @@ pub struct Variant {
     /// Thin-disk crossings a ray may see: 2 where light comes through it
     /// (constant 6).
     pub thin_crossings: u32,
+    /// The volumetric disk glows as a blackbody (else the colour map)
+    /// (constant 7).
+    pub volume_blackbody: bool,
 }
 
 impl Variant {
@@ -268,12 +280,13 @@ impl Variant {
             } else {
                 1
             },
+            volume_blackbody: scene.disk.color == VolumeColor::Blackbody,
         }
     }
 
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against raymarch.comp).
-    pub const CONSTANT_NAMES: [&'static str; 7] = [
+    pub const CONSTANT_NAMES: [&'static str; 8] = [
         "ONE_HOLE",
         "DISK_KIND",
         "SKY_KIND",
@@ -281,9 +294,10 @@ impl Variant {
         "LIGHT_DELAY",
         "THIN_STRUCTURE",
         "THIN_CROSSINGS",
+        "VOLUME_BLACKBODY",
     ];
 
-    pub fn constants(&self) -> [u32; 7] {
+    pub fn constants(&self) -> [u32; 8] {
         [
             u32::from(self.one_hole),
             self.disk,
@@ -292,12 +306,13 @@ impl Variant {
             u32::from(self.light_delay),
             u32::from(self.structure),
             self.thin_crossings,
+            u32::from(self.volume_blackbody),
         ]
     }
 
     pub fn name(&self) -> String {
         format!(
-            "raymarch{} (one hole {}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {})",
+            "raymarch{} (one hole {}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {})",
             if self.aov { " aov" } else { "" },
             self.one_hole,
             self.disk,
@@ -305,7 +320,8 @@ impl Variant {
             self.plane,
             self.light_delay,
             self.structure,
-            self.thin_crossings
+            self.thin_crossings,
+            self.volume_blackbody
         )
     }
 }
@@ -318,9 +334,7 @@ pub fn add_raymarch<'a>(
 ) -> ImageHandle {
     let RaymarchInputs {
         params,
-        disk_lut,
-        disk_noise,
-        sky,
+        images,
         output,
         size: (width, height),
         variant,
@@ -331,13 +345,20 @@ pub fn add_raymarch<'a>(
     };
 
     let mut hdr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
+    let SceneImages {
+        disk_lut,
+        disk_noise,
+        volume_noise,
+        sky,
+    } = images;
     let (out, lut, sky_tex, ubo) = (hdr.clone(), disk_lut.clone(), sky.clone(), params.clone());
-    let noise = disk_noise.clone();
+    let (noise, volume) = (disk_noise.clone(), volume_noise.clone());
     let mut pass = graph
         .add_pass("raymarch")
         .read_buffer(params, Access::ComputeStorageRead)
         .read(disk_lut, Access::ComputeSampledRead, Mips::ALL)
-        .read(disk_noise, Access::ComputeSampledRead, Mips::ALL);
+        .read(disk_noise, Access::ComputeSampledRead, Mips::ALL)
+        .read(volume_noise, Access::ComputeSampledRead, Mips::ALL);
     if sky != disk_lut {
         pass = pass.read(sky, Access::ComputeSampledRead, Mips::ALL);
     }
@@ -345,6 +366,7 @@ pub fn add_raymarch<'a>(
         .record(move |ctx| {
             // Built on first use (Renderer::prepare_scene builds it ahead).
             let pipeline = pipelines.raymarch(variant)?;
+            let repeat = pipelines.repeat_sampler.sampler;
             dispatch_2d(
                 ctx,
                 &pipeline,
@@ -356,10 +378,8 @@ pub fn add_raymarch<'a>(
                         ctx.full_view(&sky_tex),
                         pipelines.sky_sampler.sampler,
                     ),
-                    Descriptor::SampledImage(
-                        ctx.full_view(&noise),
-                        pipelines.repeat_sampler.sampler,
-                    ),
+                    Descriptor::SampledImage(ctx.full_view(&noise), repeat),
+                    Descriptor::SampledImage(ctx.full_view(&volume), repeat),
                 ],
                 &[],
                 width,

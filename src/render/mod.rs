@@ -200,9 +200,10 @@ impl Renderer {
     /// flight is done with the old one). An unreadable sky is reported here,
     /// before any frame is built.
     pub fn prepare_scene(&mut self, scene: &Scene) -> Result<()> {
-        if self.resources.sky_changes(scene) {
+        if self.resources.sky_changes(scene) || self.resources.volume_changes(scene) {
             self.wait_idle()?;
             self.resources.ensure_sky(scene)?;
+            self.resources.ensure_volume(scene)?;
         }
         // The ray march specialised for this scene, built now rather than
         // while a frame records (a new variant takes lavapipe a moment).
@@ -663,16 +664,14 @@ fn add_scene_frame<'a>(
     accumulation: Option<Accumulation<'_>>,
 ) -> ImageHandle {
     let params = g.import_buffer("raymarch params", params, Access::HostWrite, None);
-    let (lut, noise, sky) = import_scene_images(g, resources);
+    let images = import_scene_images(g, resources);
     add_frame(
         g,
         pipelines,
         HdrSource::RayMarch {
             scene,
             params: &params,
-            disk_lut: &lut,
-            disk_noise: &noise,
-            sky: &sky,
+            images: &images,
             size,
         },
         PostSettings {
@@ -684,37 +683,31 @@ fn add_scene_frame<'a>(
     )
 }
 
-/// Imports the colour table and the sky (the table again when the sky is not
-/// an image: the binding must hold something).
-fn import_scene_images(
-    g: &mut Graph<'_>,
-    res: &SceneResources,
-) -> (ImageHandle, ImageHandle, ImageHandle) {
-    let lut = g.import_image(
-        "disk lut",
-        res.disk_lut.desc,
-        res.disk_lut.binding(),
-        Access::ComputeSampledRead,
-        Some(Access::ComputeSampledRead),
-    );
-    let noise = g.import_image(
-        "disk noise",
-        res.disk_noise.desc,
-        res.disk_noise.binding(),
-        Access::ComputeSampledRead,
-        Some(Access::ComputeSampledRead),
-    );
-    let sky = match &res.sky {
-        Some((_, image)) => g.import_image(
-            "sky",
+/// Imports the colour table, the noise textures and the sky (the table again
+/// when the sky is not an image: the binding must hold something).
+fn import_scene_images(g: &mut Graph<'_>, res: &SceneResources) -> raymarch::SceneImages {
+    let mut import = |name: &str, image: &crate::vk::Image| {
+        g.import_image(
+            name,
             image.desc,
             image.binding(),
             Access::ComputeSampledRead,
             Some(Access::ComputeSampledRead),
-        ),
-        None => lut.clone(),
+        )
     };
-    (lut, noise, sky)
+    let disk_lut = import("disk lut", &res.disk_lut);
+    let disk_noise = import("disk noise", &res.disk_noise);
+    let volume_noise = import("volume noise", &res.volume_noise);
+    let sky = match &res.sky {
+        Some((_, image)) => import("sky", image),
+        None => disk_lut.clone(),
+    };
+    raymarch::SceneImages {
+        disk_lut,
+        disk_noise,
+        volume_noise,
+        sky,
+    }
 }
 
 /// The radical inverse of `i` in `base` (Halton sequence), in [0, 1): the

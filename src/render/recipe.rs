@@ -16,9 +16,7 @@ pub enum HdrSource<'h> {
     RayMarch {
         scene: &'h Scene,
         params: &'h BufferHandle,
-        disk_lut: &'h ImageHandle,
-        disk_noise: &'h ImageHandle,
-        sky: &'h ImageHandle,
+        images: &'h raymarch::SceneImages,
         size: (u32, u32),
     },
     /// An image already in the graph (the post-processing API's upload).
@@ -67,18 +65,14 @@ pub fn add_frame<'a>(
         HdrSource::RayMarch {
             scene,
             params,
-            disk_lut,
-            disk_noise,
-            sky,
+            images,
             size,
         } => raymarch::add_raymarch(
             graph,
             pipelines,
             raymarch::RaymarchInputs {
                 params,
-                disk_lut,
-                disk_noise,
-                sky,
+                images,
                 output: if output == FrameOutput::Geodesic {
                     raymarch::RaymarchOutput::Geodesic
                 } else {

@@ -10,12 +10,17 @@ use super::{Gpu, memory};
 use crate::Result;
 use crate::error::VkContext;
 
-/// Format, size and mip count of a 2-D colour image.
+/// Format, size and mip count of a colour image: 2-D, or a 3-D volume
+/// (sampled, one level).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct ImageDesc {
     pub format: vk::Format,
     pub width: u32,
     pub height: u32,
+    /// 1 for a 2-D image.
+    pub depth: u32,
+    /// A 3-D image (even one texel deep).
+    pub volume: bool,
     pub mip_levels: u32,
 }
 
@@ -26,6 +31,20 @@ impl ImageDesc {
             format,
             width,
             height,
+            depth: 1,
+            volume: false,
+            mip_levels: 1,
+        }
+    }
+
+    /// A single-level 3-D image.
+    pub fn new_3d(format: vk::Format, width: u32, height: u32, depth: u32) -> Self {
+        ImageDesc {
+            format,
+            width,
+            height,
+            depth: depth.max(1),
+            volume: true,
             mip_levels: 1,
         }
     }
@@ -77,12 +96,16 @@ impl Image {
     ) -> Result<Self> {
         let d = &gpu.device;
         let info = vk::ImageCreateInfo::default()
-            .image_type(vk::ImageType::TYPE_2D)
+            .image_type(if desc.volume {
+                vk::ImageType::TYPE_3D
+            } else {
+                vk::ImageType::TYPE_2D
+            })
             .format(desc.format)
             .extent(vk::Extent3D {
                 width: desc.width,
                 height: desc.height,
-                depth: 1,
+                depth: desc.depth,
             })
             .mip_levels(desc.mip_levels)
             .array_layers(1)
@@ -124,7 +147,11 @@ impl Image {
     fn make_view(&self, base: u32, count: u32) -> Result<vk::ImageView> {
         let info = vk::ImageViewCreateInfo::default()
             .image(self.image)
-            .view_type(vk::ImageViewType::TYPE_2D)
+            .view_type(if self.desc.volume {
+                vk::ImageViewType::TYPE_3D
+            } else {
+                vk::ImageViewType::TYPE_2D
+            })
             .format(self.desc.format)
             .subresource_range(vk::ImageSubresourceRange {
                 aspect_mask: vk::ImageAspectFlags::COLOR,
@@ -187,18 +214,20 @@ impl Sampler {
         Self::linear(gpu, "the sky sampler", vk::SamplerAddressMode::REPEAT)
     }
 
-    /// Bilinear, repeating in both directions (tileable textures).
+    /// Linear, repeating in every direction (tileable textures and volumes).
     pub fn linear_repeat(gpu: &Arc<Gpu>) -> Result<Self> {
         Self::linear_modes(
             gpu,
             "the repeating sampler",
             vk::SamplerAddressMode::REPEAT,
             vk::SamplerAddressMode::REPEAT,
+            vk::SamplerAddressMode::REPEAT,
         )
     }
 
     fn linear(gpu: &Arc<Gpu>, what: &str, address_u: vk::SamplerAddressMode) -> Result<Self> {
-        Self::linear_modes(gpu, what, address_u, vk::SamplerAddressMode::CLAMP_TO_EDGE)
+        let clamp = vk::SamplerAddressMode::CLAMP_TO_EDGE;
+        Self::linear_modes(gpu, what, address_u, clamp, clamp)
     }
 
     fn linear_modes(
@@ -206,6 +235,7 @@ impl Sampler {
         what: &str,
         address_u: vk::SamplerAddressMode,
         address_v: vk::SamplerAddressMode,
+        address_w: vk::SamplerAddressMode,
     ) -> Result<Self> {
         let info = vk::SamplerCreateInfo::default()
             .mag_filter(vk::Filter::LINEAR)
@@ -213,7 +243,7 @@ impl Sampler {
             .mipmap_mode(vk::SamplerMipmapMode::LINEAR)
             .address_mode_u(address_u)
             .address_mode_v(address_v)
-            .address_mode_w(vk::SamplerAddressMode::CLAMP_TO_EDGE)
+            .address_mode_w(address_w)
             .max_lod(vk::LOD_CLAMP_NONE);
         // SAFETY: valid device.
         let sampler =
