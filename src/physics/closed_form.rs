@@ -78,7 +78,11 @@ fn incomplete_f(sin2: f64, cos2: f64, delta2: f64) -> f64 {
 }
 
 /// Jacobi sn(w, k) and cn(w, k) for the parameter m = k² (m' = 1 - m given),
-/// by the arithmetic-geometric mean.
+/// by the arithmetic-geometric mean and the descent by arcsines (Abramowitz
+/// & Stegun 16.4). The shader takes Bulirsch's descending recurrence instead
+/// (lightpath.glsl, `jacobi_sn_cn`): the descent's error grows as 2^n times
+/// f32's resolution, harmless here in f64, so the two methods check each
+/// other.
 pub fn jacobi_sn_cn(w: f64, m_complement: f64) -> (f64, f64) {
     let mut a = [0.0f64; 16];
     let mut c = [0.0f64; 16];
