@@ -33,6 +33,8 @@ layout(constant_id = 6) const int THIN_CROSSINGS = 1;
 // The volumetric disk glows as a blackbody at its shifted temperature (else
 // the film's colour map).
 layout(constant_id = 7) const bool VOLUME_BLACKBODY = false;
+// Gravity off: rays are straight lines, traced in closed form.
+layout(constant_id = 8) const bool STRAIGHT = false;
 
 #include "params.glsl"
 #include "geodesic.glsl"
@@ -420,6 +422,70 @@ Hit trace_planar(vec3 x, vec3 d) {
     return hit;
 }
 
+// Gravity off: the ray is the line x + t d. It ends at the first horizon it
+// enters (the holes still absorb), at the thin disk's plane inside the
+// annulus, or at the sky in its own direction; the volumetric disk is
+// gathered along the part of the line inside the slab, in chords of at most
+// 16 samples (the step-by-step path's spacing), up to the horizon.
+Hit trace_straight(vec3 x, vec3 d) {
+    Hit hit;
+    hit.outcome = OUT_ESCAPED;
+    hit.pos = x;
+    hit.dir = d;
+    hit.g = 0.0;
+    hit.glow = vec3(0.0);
+    hit.trans = 1.0;
+    float t_h = 1e30;
+    for (uint k = 0u; k < P.counts.x; ++k) {
+        vec3 rel = x - P.holes[k].xyz;
+        float rs = P.holes[k].w;
+        float b = dot(rel, d);
+        float cc = dot(rel, rel) - rs * rs;
+        float disc = b * b - cc;
+        float t = -b - sqrt(max(disc, 0.0));
+        if (cc < 0.0) t_h = 0.0;                              // inside a horizon
+        else if (disc > 0.0 && t > 0.0) t_h = min(t_h, t);
+    }
+    vec3 c0 = P.holes[0].xyz;
+    vec3 N = P.disk_normal.xyz;
+    float y0 = plane_dist(x), dn = dot(d, N);
+    if (DISK_KIND == DISK_THIN) {
+        float t_d = -y0 / dn;
+        vec3 p = x + t_d * d;
+        float rho = length(p - c0);
+        if (t_d > 0.0 && t_d < t_h && rho >= P.disk.x && rho <= P.disk.y) {
+            hit.outcome = OUT_DISK;
+            hit.pos = p;
+            hit.g = disk_redshift(p, x, d);
+            return hit;
+        }
+    } else if (DISK_KIND == DISK_VOLUME) {
+        // Where |height| < H along the line, before any horizon.
+        float H = P.vol0.x;
+        float ta = abs(dn) > 1e-9 ? (-H - y0) / dn : (abs(y0) < H ? 0.0 : 1e30);
+        float tb = abs(dn) > 1e-9 ? (H - y0) / dn : (abs(y0) < H ? 1e30 : -1e30);
+        float t0 = max(min(ta, tb), 0.0);
+        // Not past the disk's outer edge: the farthest point of the line
+        // within the outer radius of the hole.
+        vec3 rel = x - c0;
+        float s = dot(rel, d);
+        float far = -s + sqrt(max(P.disk.y * P.disk.y - (dot(rel, rel) - s * s), 0.0));
+        float t1 = min(min(max(ta, tb), t_h), far);
+        float lambda = dot(cross(rel, -d), N);
+        const float CHORD = 16.0 * VOLUME_DS;
+        for (float t = t0; t < t1; t += CHORD) {
+            volume_segment(x + t * d, x + min(t + CHORD, t1) * d, lambda, hit.glow, hit.trans);
+            if (hit.trans < 0.003) break;
+        }
+        if (hit.trans < 0.003) {
+            hit.outcome = OUT_CAPTURED;
+            return hit;
+        }
+    }
+    if (t_h < 1e29) hit.outcome = OUT_CAPTURED;
+    return hit;
+}
+
 Hit trace(vec3 x, vec3 v) {
     Hit hit;
     hit.outcome = OUT_NO_STEPS;
@@ -563,7 +629,9 @@ void main() {
     // by the sub-pixel jitter, zero for a single offscreen frame) so the
     // window's accumulation averages the grain away.
     volume_jitter = hash33(uvec3(px, 7u + floatBitsToUint(P.cam_up.w) + 3u * floatBitsToUint(P.cam_fwd.w))).x;
-    Hit hit = ONE_HOLE ? trace_planar(P.cam_pos.xyz, dir) : trace(P.cam_pos.xyz, dir);
+    Hit hit = ONE_HOLE ? trace_planar(P.cam_pos.xyz, dir)
+            : STRAIGHT ? trace_straight(P.cam_pos.xyz, dir)
+            : trace(P.cam_pos.xyz, dir);
     hit.g *= observer_g;
 #ifdef GEODESIC_AOV
     vec4 aov = vec4(0.0, 0.0, 0.0, float(hit.outcome));

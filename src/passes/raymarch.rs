@@ -262,6 +262,8 @@ pub struct Variant {
     /// The volumetric disk glows as a blackbody (else the colour map)
     /// (constant 7).
     pub volume_blackbody: bool,
+    /// Gravity off: straight rays, traced in closed form (constant 8).
+    pub straight: bool,
 }
 
 impl Variant {
@@ -281,12 +283,13 @@ impl Variant {
                 1
             },
             volume_blackbody: scene.disk.color == VolumeColor::Blackbody,
+            straight: !scene.physics.gravity,
         }
     }
 
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against raymarch.comp).
-    pub const CONSTANT_NAMES: [&'static str; 8] = [
+    pub const CONSTANT_NAMES: [&'static str; 9] = [
         "ONE_HOLE",
         "DISK_KIND",
         "SKY_KIND",
@@ -295,9 +298,10 @@ impl Variant {
         "THIN_STRUCTURE",
         "THIN_CROSSINGS",
         "VOLUME_BLACKBODY",
+        "STRAIGHT",
     ];
 
-    pub fn constants(&self) -> [u32; 8] {
+    pub fn constants(&self) -> [u32; 9] {
         [
             u32::from(self.one_hole),
             self.disk,
@@ -307,12 +311,13 @@ impl Variant {
             u32::from(self.structure),
             self.thin_crossings,
             u32::from(self.volume_blackbody),
+            u32::from(self.straight),
         ]
     }
 
     pub fn name(&self) -> String {
         format!(
-            "raymarch{} (one hole {}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {})",
+            "raymarch{} (one hole {}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, straight {})",
             if self.aov { " aov" } else { "" },
             self.one_hole,
             self.disk,
@@ -321,7 +326,8 @@ impl Variant {
             self.light_delay,
             self.structure,
             self.thin_crossings,
-            self.volume_blackbody
+            self.volume_blackbody,
+            self.straight
         )
     }
 }
