@@ -59,10 +59,10 @@ vec3 blackbody(float t) {
 // The image sky's panorama with mips, the catalogue's star grid with mips
 // (src/stars.rs), or the colour table, unused, for the other skies.
 layout(binding = 3) uniform sampler2D sky_tex;
-// The thin disk's tileable noise (src/render/resources.rs, `disk_noise`).
+// The thin disk's tileable noise (src/render/noise.rs, `disk_noise`).
 layout(binding = 4) uniform sampler2D disk_noise;
 // The volumetric disk's noise volume, three octaves in r, g, b
-// (src/render/resources.rs, `volume_noise`).
+// (src/render/noise.rs, `volume_noise`).
 layout(binding = 5) uniform sampler3D volume_noise;
 
 #include "sky.glsl"

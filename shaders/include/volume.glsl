@@ -1,17 +1,17 @@
 // The volumetric disk (the second seed's look, reworked): a slab of glowing
 // gas around the first hole whose density falls with height and radius, cut
-// into filaments by several octaves of 3-D simplex noise that turn with the
-// Keplerian angular velocity of their radius (so the inner parts shear ahead
-// of the outer ones). The noise is read from a precomputed tileable volume
-// (src/render/resources.rs, `volume_noise`), whose period is here. Light is gathered along each integration step by
+// into filaments by octaves of gradient noise that turn with the Keplerian
+// angular velocity of their radius (so the inner parts shear ahead of the
+// outer ones). The noise is read from a precomputed tileable volume
+// (src/render/noise.rs, `volume_noise`). Light is gathered by
 // emission-absorption: colour += T * emission * ds, T *= exp(-sigma ds).
 // Requires params.glsl, the volume_noise sampler, VOLUME_BLACKBODY and
 // disk_color() / disk shift helpers.
 #ifndef VOLUME_GLSL
 #define VOLUME_GLSL
 
-// The noise volume's period in noise units (VOLUME_NOISE_PERIOD in
-// src/render/resources.rs).
+// The noise volume's period in lattice units of its first octave
+// (VOLUME_NOISE_PERIOD in src/render/noise.rs).
 const float VOLUME_NOISE_PERIOD_XZ = 16.0;
 const float VOLUME_NOISE_PERIOD_Y = 8.0;
 

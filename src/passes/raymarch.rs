@@ -217,9 +217,9 @@ impl RaymarchParams {
 /// (`render::resources`) and imported into each frame's graph.
 pub struct SceneImages {
     pub disk_lut: ImageHandle,
-    /// The thin disk's tileable noise (`render::resources::disk_noise`).
+    /// The thin disk's tileable noise (`render::noise::disk_noise`).
     pub disk_noise: ImageHandle,
-    /// The volumetric disk's noise volume (`render::resources::volume_noise`;
+    /// The volumetric disk's noise volume (`render::noise::volume_noise`;
     /// a 1x1x1 placeholder for other disks).
     pub volume_noise: ImageHandle,
     /// The image sky; the colour table again when the sky is not an image

@@ -3,6 +3,7 @@
 //! ([`recipe::add_frame`]) and runs it, offscreen (read back to the host) or
 //! onto a swapchain image (the window).
 
+pub mod noise;
 pub mod recipe;
 pub mod resources;
 pub mod slots;
