@@ -682,7 +682,7 @@ void main() {
         grid_plane(hit.pos, hit.dir, pixel_angle, color);
     }
     else if (!ONE_HOLE && hit.outcome == OUT_DISK) {
-        // The general path's disk (several holes, gravity off): opaque. (The
+        // The general and straight paths' disk (several holes, gravity off): opaque. (The
         // closed-form path adds the disk's light as it goes; compiled out.)
         float r = length(hit.pos - P.holes[0].xyz);
         float dens = THIN_STRUCTURE ? thin_disk_density(r, disk_azimuth(hit.pos), P.vol1.y) : 1.0;

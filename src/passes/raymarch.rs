@@ -1,11 +1,12 @@
 //! The ray march: one compute invocation per pixel follows the camera ray
-//! along the Schwarzschild light-path equation (the conventions in the README, "Physics") with an
-//! adaptive Dormand-Prince 5(4) integrator, and writes linear HDR radiance.
-//!
-//! Technique: the spatial-orbit form x'' = -1.5 rs h^2 x / r^5 of the null
-//! geodesic equation (see e.g. the "Photons and black holes" derivation from
-//! Binet's equation u'' + u = 1.5 rs u^2), integrated in Cartesian coordinates
-//! so several holes can be summed.
+//! and writes linear HDR radiance (or the geodesic AOV). Which path it takes
+//! is a specialisation of the shader ([`Variant`]): one hole with gravity,
+//! the closed-form light path (shaders/include/lightpath.glsl, the
+//! conventions in the README, "Physics"); gravity off, a straight line;
+//! several holes, the spatial-orbit form x'' = -1.5 rs h^2 x / r^5 of the
+//! null geodesic equation (from Binet's equation u'' + u = 1.5 rs u^2)
+//! integrated in Cartesian coordinates with adaptive Dormand-Prince 5(4),
+//! so the holes' pulls can be summed.
 
 use ash::vk;
 use bytemuck::{Pod, Zeroable};
