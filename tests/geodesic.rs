@@ -419,3 +419,104 @@ fn accuracy_versus_quality() {
         );
     }
 }
+
+/// Gravity off: every ray is the straight line along its coordinate
+/// direction, so the reference is closed-form geometry written here (not the
+/// shader's method): the first horizon the line enters, the disk plane
+/// inside the annulus before it, else the sky in the ray's own direction.
+/// Two holes, the second inside the disk's annulus, so some lines meet its
+/// horizon before the disk's plane.
+#[test]
+fn straight_rays_follow_lines_through_horizons_and_the_disk() {
+    let dir = scratch();
+    let scene_path = path_in(&dir, "scene.toml");
+    std::fs::write(
+        &scene_path,
+        "[camera]\nposition = [0.0, 2.5, -8.0]\nvfov_deg = 70.0\n\n\
+         [[black_hole]]\nposition = [0.0, 0.0, 0.0]\nrs = 1.0\n\n\
+         [[black_hole]]\nposition = [6.0, 0.0, 1.0]\nrs = 0.8\n\n\
+         [physics]\ngravity = false\n",
+    )
+    .unwrap();
+    let out = path_in(&dir, "aov.exr");
+    let mut c = blackhole();
+    c.args(["render", "--aov", "geodesic", "--width"])
+        .arg(W.to_string())
+        .arg("--height")
+        .arg(H.to_string())
+        .arg("--scene")
+        .arg(&scene_path)
+        .arg("--out")
+        .arg(&out);
+    let (code, stdout, stderr) = run(c);
+    assert_clean(code, &stdout, &stderr);
+    let gpu = image::open(&out).expect("AOV EXR").to_rgba32f();
+
+    let scene = Scene::from_toml(&std::fs::read_to_string(&scene_path).unwrap(), "scene").unwrap();
+    let frame = scene.camera.frame();
+    let observer = scene.observer();
+    let centre = DVec3::from(scene.black_holes[0].position);
+    let normal = DVec3::from(scene.disk.normal).normalize();
+    let (inner, outer) = (scene.disk.inner_radius, scene.disk.outer_radius);
+    // (outcome code, escape direction or (radius, azimuth, 0)).
+    let line = |d: DVec3| -> (u32, DVec3) {
+        let v = observer.coordinate_direction(d).normalize();
+        let x = frame.position;
+        let mut t_h = f64::INFINITY;
+        for h in &scene.black_holes {
+            let rel = x - DVec3::from(h.position);
+            let (b, cc) = (rel.dot(v), rel.length_squared() - h.rs * h.rs);
+            let disc = b * b - cc;
+            if disc > 0.0 && -b - disc.sqrt() > 0.0 {
+                t_h = t_h.min(-b - disc.sqrt());
+            }
+        }
+        let t_d = -(x - centre).dot(normal) / v.dot(normal);
+        let p = x + t_d * v;
+        let rho = (p - centre).length();
+        if t_d > 0.0 && t_d < t_h && (inner..=outer).contains(&rho) {
+            (2, DVec3::new(rho, disk_azimuth(centre, normal, p), 0.0))
+        } else if t_h.is_finite() {
+            (1, DVec3::ZERO)
+        } else {
+            (0, v)
+        }
+    };
+    let (mut counts, mut edge) = ([0usize; 3], 0);
+    let (mut dir_err, mut radius_err): (Vec<f64>, Vec<f64>) = (vec![], vec![]);
+    for row in 0..H {
+        for col in 0..W {
+            let d = frame.ray_dir(col, row, W, H);
+            let (code, want) = line(d);
+            let px = gpu.get_pixel(col, row).0;
+            if px[3] as u32 != code {
+                let e = 1e-4;
+                let near_edge = [frame.right, -frame.right, frame.up, -frame.up]
+                    .iter()
+                    .any(|&n| line((d + e * n).normalize()).0 != code);
+                assert!(near_edge, "ray ({col},{row}): GPU {} vs line {code}", px[3]);
+                edge += 1;
+                continue;
+            }
+            counts[code as usize] += 1;
+            let got = DVec3::new(f64::from(px[0]), f64::from(px[1]), f64::from(px[2]));
+            match code {
+                0 => dir_err.push(got.cross(want).length().atan2(got.dot(want))),
+                2 => radius_err.push((got.x - want.x).abs()),
+                _ => assert_eq!(&px[..3], &[0.0, 0.0, 0.0]),
+            }
+        }
+    }
+    println!(
+        "straight lines: outcomes {counts:?} (edge {edge}), escape dir p99 {:.2e} rad, disk radius p99 {:.2e} rs",
+        p99(&mut dir_err),
+        p99(&mut radius_err)
+    );
+    assert!(
+        counts.iter().all(|&n| n >= 20),
+        "the view must hold sky, horizons and disk: {counts:?}"
+    );
+    assert!(edge * 20 < (W * H) as usize, "too many edge rays: {edge}");
+    assert!(p99(&mut dir_err) <= 1e-6, "escape direction");
+    assert!(p99(&mut radius_err) <= 1e-4, "disk radius");
+}
