@@ -168,7 +168,7 @@ pub fn cube_face(d: DVec3) -> (usize, f64, f64) {
 }
 
 /// Steps of a cell's light place along u in a packed texel (see
-/// [`pack_place`]).
+/// [`pack_place`]; `STAR_PLACE_STEPS` in sky.glsl, checked by tests/layout.rs).
 pub const PLACE_STEPS: f64 = 4095.0;
 
 /// The place of a cell's light inside the cell (u, v in [0, 1]) packed into
@@ -176,14 +176,18 @@ pub const PLACE_STEPS: f64 = 4095.0;
 /// (a cell at level 0 is about half a degree, so both are good to 1e-4
 /// degree). The shader unpacks it in `sky_catalogue`.
 pub fn pack_place(u: f64, v: f64) -> f32 {
-    ((u.clamp(0.0, 1.0) * PLACE_STEPS).round() + v.clamp(0.0, 1.0) * (4095.0 / 4096.0)) as f32
+    let v_scale = PLACE_STEPS / (PLACE_STEPS + 1.0);
+    ((u.clamp(0.0, 1.0) * PLACE_STEPS).round() + v.clamp(0.0, 1.0) * v_scale) as f32
 }
 
 /// The inverse of [`pack_place`].
 pub fn unpack_place(p: f32) -> (f64, f64) {
     let p = f64::from(p);
     let whole = p.floor();
-    (whole / PLACE_STEPS, (p - whole) * (4096.0 / 4095.0))
+    (
+        whole / PLACE_STEPS,
+        (p - whole) * ((PLACE_STEPS + 1.0) / PLACE_STEPS),
+    )
 }
 
 /// Linear sRGB colour of luminance 1 of a blackbody at `t` kelvin, from the

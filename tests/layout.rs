@@ -186,6 +186,17 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
     ] {
         assert_eq!(define(params, name), f64::from(kind as u32), "{name}");
     }
+    // Packed and tabulated data the host builds for the shaders.
+    let sky = include_str!("../shaders/include/sky.glsl");
+    assert_eq!(
+        define(sky, "STAR_PLACE_STEPS"),
+        blackhole::stars::PLACE_STEPS
+    );
+    let volume = include_str!("../shaders/include/volume.glsl");
+    let period = blackhole::render::noise::VOLUME_NOISE_PERIOD;
+    assert_eq!(define(volume, "VOLUME_NOISE_PERIOD_XZ"), period[0]);
+    assert_eq!(define(volume, "VOLUME_NOISE_PERIOD_Y"), period[1]);
+    assert_eq!(period[0], period[2], "the shader has one period across");
     // The AOV's outcome codes are binding (the geodesic AOV table in the README).
     let raymarch = include_str!("../shaders/raymarch.comp");
     for (name, code) in [

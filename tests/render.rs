@@ -520,15 +520,21 @@ fn a_frame_past_the_gpu_timeout_is_an_error_not_a_hang() {
     let t = std::time::Instant::now();
     let (code, _, stderr) = run(c);
     assert!(t.elapsed().as_secs() < 60, "took {:?}", t.elapsed());
-    assert_eq!(code, 1, "{stderr}");
+    assert_gpu_failure("timeout", code, &stderr, "BLACKHOLE_GPU_TIMEOUT_S", &out);
+}
+
+/// A run (`what`) the GPU failed: exit 1, exactly one `error` line and it
+/// `says` what happened, no panic, no validation message, no output file.
+fn assert_gpu_failure(what: &str, code: i32, stderr: &str, says: &str, out: &std::path::Path) {
+    assert_eq!(code, 1, "{what}: {stderr}");
     let errors: Vec<&str> = stderr.lines().filter(|l| l.starts_with("error")).collect();
-    assert_eq!(errors.len(), 1, "{stderr}");
-    assert!(errors[0].contains("BLACKHOLE_GPU_TIMEOUT_S"), "{stderr}");
+    assert_eq!(errors.len(), 1, "{what}: {stderr}");
+    assert!(errors[0].contains(says), "{what}: {stderr}");
     assert!(
         !stderr.contains("panicked") && !stderr.contains("VALIDATION"),
-        "{stderr}"
+        "{what}: {stderr}"
     );
-    assert!(!out.exists());
+    assert!(!out.exists(), "{what}: {} was written", out.display());
 }
 
 /// The failures a real GPU can produce and lavapipe never does, injected
@@ -555,14 +561,6 @@ fn a_lost_device_or_exhausted_memory_is_one_error_line_not_a_crash() {
             .args(["render", "--width", "320", "--height", "180", "--out"])
             .arg(&out);
         let (code, _, stderr) = run(c);
-        assert_eq!(code, 1, "{fault}: {stderr}");
-        let errors: Vec<&str> = stderr.lines().filter(|l| l.starts_with("error")).collect();
-        assert_eq!(errors.len(), 1, "{fault}: {stderr}");
-        assert!(errors[0].contains(says), "{fault}: {stderr}");
-        assert!(
-            !stderr.contains("panicked") && !stderr.contains("VALIDATION"),
-            "{fault}: {stderr}"
-        );
-        assert!(!out.exists(), "{fault}");
+        assert_gpu_failure(fault, code, &stderr, says, &out);
     }
 }

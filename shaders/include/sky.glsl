@@ -3,6 +3,10 @@
 #ifndef SKY_GLSL
 #define SKY_GLSL
 
+// Steps of a star cell's packed light place along u (PLACE_STEPS in
+// src/stars.rs).
+#define STAR_PLACE_STEPS 4095.0
+
 // A pixel's footprint on the sky: the change of the ray's final direction
 // from this pixel to the next one across (x) and down (y), in radians (the
 // ray differentials; unlensed, the pixel's angular size in two directions
@@ -192,7 +196,8 @@ vec3 sky_catalogue(vec3 dw, Footprint f) {
             // fraction v in 4096ths); yzw: the stars' light (src/stars.rs).
             vec4 t = texelFetch(sky_tex, ivec2(int(face) * int(n) + int(c.x), int(c.y)), int(level));
             float pu = floor(t.x);
-            vec2 place = vec2(pu * (1.0 / 4095.0), (t.x - pu) * (4096.0 / 4095.0));
+            vec2 place = vec2(pu * (1.0 / STAR_PLACE_STEPS),
+                              (t.x - pu) * ((STAR_PLACE_STEPS + 1.0) / STAR_PLACE_STEPS));
             vec2 p = q * (c + place - g);
             light += exp(-0.5 / (SIGMA * SIGMA) * dot(p, p)) * t.yzw;
         }

@@ -11,9 +11,9 @@
 #define VOLUME_GLSL
 
 // The noise volume's period in lattice units of its first octave
-// (VOLUME_NOISE_PERIOD in src/render/noise.rs).
-const float VOLUME_NOISE_PERIOD_XZ = 16.0;
-const float VOLUME_NOISE_PERIOD_Y = 8.0;
+// (VOLUME_NOISE_PERIOD in src/render/noise.rs, checked by tests/layout.rs).
+#define VOLUME_NOISE_PERIOD_XZ 16.0
+#define VOLUME_NOISE_PERIOD_Y 8.0
 
 // The film look's colour map: white-yellow inside to deep orange outside.
 vec3 volume_colormap(float r) {
