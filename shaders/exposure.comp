@@ -5,14 +5,18 @@
 // of the lit ones (the black shadow and empty sky would pull the mean down
 // without saying anything about the light), each weighted by its brightness,
 // and writes the exposure that brings the band's mean luminance to the key
-// value (mid grey, 0.18).
+// value (mid grey, 0.18). The result goes to a one-float storage buffer: a
+// uniform-address buffer load is one scalar load on a CPU driver, where a
+// texel fetch is a per-pixel gather.
 
 layout(local_size_x = 256) in;
 
 #include "color.glsl"
 
 layout(binding = 0) uniform sampler2D hdr;
-layout(binding = 1, r32f) uniform writeonly image2D result;
+layout(std430, binding = 1) writeonly buffer Result {
+    float exposure;
+} result;
 
 layout(push_constant) uniform Push {
     uvec2 size;       // HDR image size
@@ -65,5 +69,5 @@ void main() {
     }
     // Nothing lit: the exposure of a frame whose band sits at the key.
     float mean_log = weight > 0.0 ? sum / weight : log2(pc.key);
-    imageStore(result, ivec2(0), vec4(pc.key / exp2(mean_log), 0.0, 0.0, 1.0));
+    result.exposure = pc.key / exp2(mean_log);
 }

@@ -386,7 +386,7 @@ fn access_supported_by(stage: vk::PipelineStageFlags2, access: vk::AccessFlags2)
             S::COLOR_ATTACHMENT_OUTPUT,
         ),
         (A::HOST_READ | A::HOST_WRITE, S::HOST),
-        (A::NONE, S::NONE),
+        (A::INDIRECT_COMMAND_READ, S::DRAW_INDIRECT),
         (A::NONE, S::NONE),
         (A::NONE, S::NONE),
         (A::NONE, S::NONE),
@@ -566,6 +566,122 @@ fn read_write_of_an_unwritten_transient_is_refused_too() {
     );
     g.add_pass("accumulate")
         .write(&mut img, Access::ComputeStorageReadWrite, Mips::ALL)
+        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    assert!(g.compile().is_err());
+}
+
+/// The work-list pattern of the ray march's disk pass: a transfer clears a
+/// graph-owned counter, a compute pass appends to it, and a later dispatch
+/// reads it as its indirect arguments.
+#[test]
+fn a_cleared_then_appended_transient_buffer_is_visible_to_the_indirect_dispatch_that_reads_it() {
+    let mut g = Graph::new(8, 8);
+    let mut args = g.create_buffer("args", 16);
+    let mut list = g.create_buffer("list", 256);
+    let mut out = g.import_buffer(
+        "out",
+        fake_buffer(),
+        Access::Nothing,
+        Some(Access::HostRead),
+    );
+    g.add_pass("clear")
+        .write_buffer(&mut args, Access::TransferWrite)
+        .write_buffer(&mut list, Access::TransferWrite);
+    g.add_pass("append")
+        .write_buffer(&mut args, Access::ComputeStorageReadWrite)
+        .write_buffer(&mut list, Access::ComputeStorageReadWrite);
+    g.add_pass("indirect")
+        .read_buffer(&args, Access::IndirectRead)
+        .read_buffer(&list, Access::ComputeStorageRead)
+        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    let c = g.compile().unwrap();
+    assert_eq!(c.order, vec![0, 1, 2]);
+    assert_sources_valid(&c);
+    assert_eq!(
+        c.buffer_usage[0],
+        vk::BufferUsageFlags::TRANSFER_DST
+            | vk::BufferUsageFlags::STORAGE_BUFFER
+            | vk::BufferUsageFlags::INDIRECT_BUFFER
+    );
+    let barrier = |pass: usize, buffer: usize| {
+        let b: Vec<_> = c.before[pass]
+            .buffers
+            .iter()
+            .filter(|b| b.buffer == buffer)
+            .copied()
+            .collect();
+        assert_eq!(b.len(), 1, "pass {pass}, buffer {buffer}");
+        (
+            b[0].src_stage,
+            b[0].src_access,
+            b[0].dst_stage,
+            b[0].dst_access,
+        )
+    };
+    let storage = A::SHADER_STORAGE_READ | A::SHADER_STORAGE_WRITE;
+    for buffer in [0, 1] {
+        assert_eq!(
+            barrier(1, buffer),
+            (
+                S::ALL_TRANSFER,
+                A::TRANSFER_WRITE,
+                S::COMPUTE_SHADER,
+                storage
+            )
+        );
+    }
+    assert_eq!(
+        barrier(2, 0),
+        (
+            S::COMPUTE_SHADER,
+            storage,
+            S::DRAW_INDIRECT,
+            A::INDIRECT_COMMAND_READ
+        )
+    );
+    assert_eq!(
+        barrier(2, 1),
+        (
+            S::COMPUTE_SHADER,
+            storage,
+            S::COMPUTE_SHADER,
+            A::SHADER_STORAGE_READ
+        )
+    );
+}
+
+#[test]
+fn reading_a_transient_buffer_before_anything_wrote_it_is_refused() {
+    let mut g = Graph::new(8, 8);
+    let args = g.create_buffer("never filled", 16);
+    let mut out = g.import_buffer(
+        "out",
+        fake_buffer(),
+        Access::Nothing,
+        Some(Access::HostRead),
+    );
+    g.add_pass("indirect")
+        .read_buffer(&args, Access::IndirectRead)
+        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    let e = g.compile().unwrap_err().to_string();
+    assert!(
+        e.contains("never filled") && e.contains("before any pass wrote it"),
+        "{e}"
+    );
+}
+
+#[test]
+fn indirect_arguments_are_a_buffer_access_only() {
+    let mut g = Graph::new(8, 8);
+    let img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
+    let mut out = g.import_buffer(
+        "out",
+        fake_buffer(),
+        Access::Nothing,
+        Some(Access::HostRead),
+    );
+    g.add_pass("bad")
+        .read(&img, Access::IndirectRead, Mips::ALL)
         .write_buffer(&mut out, Access::ComputeStorageWrite);
     assert!(g.compile().is_err());
 }

@@ -145,12 +145,12 @@ fn ten_thousand_offscreen_frames_hold_memory_flat() {
         r.render(&scene.at_frame(u64::from(i)), 64, 36, OutputKind::Ldr)
             .unwrap();
         if i == 99 {
-            first = (common::rss_mb(std::process::id()), r.transient_images());
+            first = (common::rss_mb(std::process::id()), r.transient_resources());
         }
     }
-    let last = (common::rss_mb(std::process::id()), r.transient_images());
+    let last = (common::rss_mb(std::process::id()), r.transient_resources());
     println!(
-        "10,000 frames in {:.0} s: resident {:.1} MB after 100 frames, {:.1} MB after 10,000; transient images {} and {}; validation {:?}",
+        "10,000 frames in {:.0} s: resident {:.1} MB after 100 frames, {:.1} MB after 10,000; transient images and buffers {} and {}; validation {:?}",
         t.elapsed().as_secs_f64(),
         first.0,
         last.0,

@@ -289,7 +289,7 @@ pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
     let mut buffer_needed: Vec<bool> = graph
         .buffers
         .iter()
-        .map(|b| b.final_access.is_some())
+        .map(|b| b.final_access().is_some())
         .collect();
     let mut live = vec![false; graph.passes.len()];
     for (p, pass) in graph.passes.iter().enumerate().rev() {
@@ -351,7 +351,7 @@ pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
     let mut buffer_state: Vec<SubState> = graph
         .buffers
         .iter()
-        .map(|b| SubState::from_access(b.initial))
+        .map(|b| SubState::from_access(b.initial()))
         .collect();
 
     let mut before = Vec::with_capacity(order.len());
@@ -377,7 +377,15 @@ pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
             merge_levels(u.image, &deps, &mut barriers.images);
         }
         for u in &pass.buffers {
-            if let Some(d) = transition(&mut buffer_state[u.buffer], u.access, false) {
+            let state = &mut buffer_state[u.buffer];
+            let reads = !u.access.info().writes || u.access == Access::ComputeStorageReadWrite;
+            if reads && !state.written {
+                return Err(Error::Other(format!(
+                    "pass `{}` reads buffer `{}` before any pass wrote it",
+                    pass.name, graph.buffers[u.buffer].name
+                )));
+            }
+            if let Some(d) = transition(state, u.access, false) {
                 barriers.buffers.push(buffer_barrier(u.buffer, d));
             }
         }
@@ -399,7 +407,7 @@ pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
         }
     }
     for (id, b) in graph.buffers.iter().enumerate() {
-        if let Some(fin) = b.final_access {
+        if let Some(fin) = b.final_access() {
             if let Some(d) = transition(&mut buffer_state[id], fin, false) {
                 after.buffers.push(buffer_barrier(id, d));
             }

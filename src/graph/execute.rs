@@ -6,15 +6,18 @@ use std::sync::Arc;
 
 use ash::vk;
 
-use super::{BufferHandle, Compiled, Graph, ImageDesc, ImageHandle, ImageOrigin, PassBarriers};
-use crate::vk::{Gpu, Image, TimestampPool};
+use super::{
+    BufferHandle, BufferOrigin, Compiled, Graph, ImageDesc, ImageHandle, ImageOrigin, PassBarriers,
+};
+use crate::vk::{Buffer, Gpu, Image, TimestampPool};
 use crate::{Error, Result};
 
-/// Graph-owned images, created on first use and reused by later frames with the
-/// same description and usage (never re-created per frame).
+/// Graph-owned images and buffers, created on first use and reused by later
+/// frames with the same description and usage (never re-created per frame).
 pub struct TransientPool {
     gpu: Arc<Gpu>,
     images: Vec<(Image, bool)>,
+    buffers: Vec<(Buffer, vk::BufferUsageFlags, bool)>,
 }
 
 impl TransientPool {
@@ -23,11 +26,15 @@ impl TransientPool {
         TransientPool {
             gpu: gpu.clone(),
             images: Vec::new(),
+            buffers: Vec::new(),
         }
     }
 
     fn begin_frame(&mut self) {
         for (_, used) in &mut self.images {
+            *used = false;
+        }
+        for (_, _, used) in &mut self.buffers {
             *used = false;
         }
     }
@@ -51,19 +58,47 @@ impl TransientPool {
         Ok(self.images.len() - 1)
     }
 
-    /// Drops images no frame used since the last `begin_frame` (after a resize).
+    fn acquire_buffer(
+        &mut self,
+        name: &str,
+        size: u64,
+        usage: vk::BufferUsageFlags,
+    ) -> Result<vk::Buffer> {
+        if let Some(i) = self
+            .buffers
+            .iter()
+            .position(|(b, u, used)| !used && b.size == size && *u == usage)
+        {
+            self.buffers[i].2 = true;
+            return Ok(self.buffers[i].0.buffer);
+        }
+        let buffer = Buffer::new(
+            &self.gpu,
+            name,
+            size,
+            usage,
+            gpu_allocator::MemoryLocation::GpuOnly,
+        )?;
+        let handle = buffer.buffer;
+        self.buffers.push((buffer, usage, true));
+        Ok(handle)
+    }
+
+    /// Drops images and buffers no frame used since the last `begin_frame`
+    /// (after a resize).
     pub fn trim_unused(&mut self) {
         self.images.retain(|(_, used)| *used);
+        self.buffers.retain(|(_, _, used)| *used);
     }
 
-    /// Number of images held.
+    /// Number of images and buffers held.
     pub fn len(&self) -> usize {
-        self.images.len()
+        self.images.len() + self.buffers.len()
     }
 
-    /// True when the pool holds no image.
+    /// True when the pool holds nothing.
     pub fn is_empty(&self) -> bool {
-        self.images.is_empty()
+        self.images.is_empty() && self.buffers.is_empty()
     }
 }
 
@@ -162,7 +197,20 @@ pub fn execute(
         };
         resolved.push(r);
     }
-    let buffer_handles: Vec<vk::Buffer> = buffers.iter().map(|b| b.binding.buffer).collect();
+    let mut buffer_handles = Vec::with_capacity(buffers.len());
+    for (id, node) in buffers.iter().enumerate() {
+        let used = compiled
+            .order
+            .iter()
+            .any(|&p| passes[p].buffers.iter().any(|u| u.buffer == id));
+        buffer_handles.push(match &node.origin {
+            BufferOrigin::Imported { binding, .. } => binding.buffer,
+            BufferOrigin::Transient if used => {
+                pool.acquire_buffer(&node.name, node.size, compiled.buffer_usage[id])?
+            }
+            BufferOrigin::Transient => vk::Buffer::null(),
+        });
+    }
 
     let timed = timestamps.filter(|t| timestamp_count(compiled.order.len()) <= t.capacity);
     if timestamps.is_some() && timed.is_none() {

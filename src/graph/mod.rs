@@ -46,12 +46,42 @@ pub(crate) struct ImageNode {
     pub origin: ImageOrigin,
 }
 
+/// Where a buffer comes from.
+#[derive(Clone, Debug)]
+pub(crate) enum BufferOrigin {
+    /// Created (or reused) by the graph; contents start undefined each frame.
+    Transient,
+    /// Owned outside; starts in `initial` and must end in `final_access`.
+    Imported {
+        binding: BufferBinding,
+        initial: Access,
+        final_access: Option<Access>,
+    },
+}
+
 #[derive(Clone, Debug)]
 pub(crate) struct BufferNode {
     pub name: String,
-    pub binding: BufferBinding,
-    pub initial: Access,
-    pub final_access: Option<Access>,
+    pub size: u64,
+    pub origin: BufferOrigin,
+}
+
+impl BufferNode {
+    /// The state the buffer enters the graph in.
+    pub(crate) fn initial(&self) -> Access {
+        match self.origin {
+            BufferOrigin::Transient => Access::Nothing,
+            BufferOrigin::Imported { initial, .. } => initial,
+        }
+    }
+
+    /// The state the graph must leave an imported buffer in, if any.
+    pub(crate) fn final_access(&self) -> Option<Access> {
+        match self.origin {
+            BufferOrigin::Transient => None,
+            BufferOrigin::Imported { final_access, .. } => final_access,
+        }
+    }
 }
 
 /// One declared image use of a pass.
@@ -163,6 +193,22 @@ impl<'a> Graph<'a> {
         }
     }
 
+    /// A graph-owned buffer of `size` bytes in device memory, created once
+    /// and reused across frames (its usage comes from the passes that use
+    /// it). Its contents start undefined each frame: a pass must write it
+    /// (a shader, or a transfer such as a fill) before any pass reads it.
+    pub fn create_buffer(&mut self, name: &str, size: u64) -> BufferHandle {
+        self.buffers.push(BufferNode {
+            name: name.to_owned(),
+            size,
+            origin: BufferOrigin::Transient,
+        });
+        BufferHandle {
+            id: self.buffers.len() - 1,
+            size,
+        }
+    }
+
     /// A buffer owned outside the graph (see [`Graph::import_image`]).
     pub fn import_buffer(
         &mut self,
@@ -173,9 +219,12 @@ impl<'a> Graph<'a> {
     ) -> BufferHandle {
         self.buffers.push(BufferNode {
             name: name.to_owned(),
-            binding,
-            initial,
-            final_access,
+            size: binding.size,
+            origin: BufferOrigin::Imported {
+                binding,
+                initial,
+                final_access,
+            },
         });
         BufferHandle {
             id: self.buffers.len() - 1,

@@ -7,7 +7,7 @@ use ash::vk;
 use bytemuck::{Pod, Zeroable};
 
 use super::{Pipelines, dispatch_2d};
-use crate::graph::{Graph, ImageDesc, ImageHandle, Mips};
+use crate::graph::{BufferHandle, Graph, ImageDesc, ImageHandle, Mips};
 use crate::scene::{Bloom, Post, Tonemap};
 use crate::vk::{Access, Descriptor};
 
@@ -74,8 +74,8 @@ impl Variant {
 pub struct CompositeInputs<'h> {
     /// Level 0 of the bloom chain, if bloom is on.
     pub bloom: Option<&'h ImageHandle>,
-    /// The 1x1 metered exposure, if automatic.
-    pub exposure: Option<&'h ImageHandle>,
+    /// The metered exposure (one f32), if automatic.
+    pub exposure: Option<&'h BufferHandle>,
 }
 
 /// Adds the composite of `hdr` (plus `bloom`, level 0, if given) at the
@@ -134,7 +134,7 @@ pub fn add_composite<'a>(
         pass = pass.read(b, Access::ComputeSampledRead, Mips::one(0));
     }
     if let Some(e) = exposure {
-        pass = pass.read(e, Access::ComputeSampledRead, Mips::ALL);
+        pass = pass.read_buffer(e, Access::ComputeStorageRead);
     }
     pass.write(&mut ldr, Access::ComputeStorageWrite, Mips::ALL)
         .record(move |ctx| {
@@ -144,9 +144,10 @@ pub fn add_composite<'a>(
                 Some(b) => ctx.view(b, 0),
                 None => ctx.full_view(&input),
             };
-            let metered_view = match &metered {
-                Some(e) => ctx.full_view(e),
-                None => ctx.full_view(&input),
+            // Without automatic exposure the shader never reads it.
+            let metered_buffer = match &metered {
+                Some(e) => ctx.buffer(e),
+                None => pipelines.placeholder_buffer.buffer,
             };
             let pipeline = pipelines.composite(variant)?;
             dispatch_2d(
@@ -156,7 +157,7 @@ pub fn add_composite<'a>(
                     Descriptor::SampledImage(ctx.full_view(&input), sampler),
                     Descriptor::StorageImage(ctx.view(&output, 0)),
                     Descriptor::SampledImage(bloom_view, sampler),
-                    Descriptor::SampledImage(metered_view, sampler),
+                    Descriptor::StorageBuffer(metered_buffer),
                 ],
                 bytemuck::bytes_of(&push),
                 width,

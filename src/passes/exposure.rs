@@ -1,14 +1,14 @@
 //! Automatic exposure: one pass meters the HDR image (a histogram of the lit
-//! pixels' log luminance, the mean of a band of its percentiles) into a 1x1
-//! image that the composite multiplies by (`shaders/exposure.comp`). Each
+//! pixels' log luminance, the mean of a band of its percentiles) into a
+//! one-float buffer that the composite multiplies by
+//! (`shaders/exposure.comp`). Each
 //! frame is metered on its own, so a sequence's frames do not depend on one
 //! another (sharding and `--resume` give the same frames).
 
-use ash::vk;
 use bytemuck::{Pod, Zeroable};
 
 use super::{Pipelines, dispatch_2d};
-use crate::graph::{Graph, ImageDesc, ImageHandle, Mips};
+use crate::graph::{BufferHandle, Graph, ImageHandle, Mips};
 use crate::scene::Post;
 use crate::vk::{Access, Descriptor};
 
@@ -27,18 +27,17 @@ pub struct ExposurePush {
 }
 
 /// Adds the metering of `hdr` when `post` asks for automatic exposure;
-/// returns the 1x1 exposure image.
+/// returns the buffer holding the exposure (one f32).
 pub fn add_exposure<'a>(
     graph: &mut Graph<'a>,
     pipelines: &'a Pipelines,
     hdr: &ImageHandle,
     post: &Post,
-) -> Option<ImageHandle> {
+) -> Option<BufferHandle> {
     if !post.auto_exposure {
         return None;
     }
-    let mut exposure =
-        graph.create_image("exposure", ImageDesc::new_2d(vk::Format::R32_SFLOAT, 1, 1));
+    let mut exposure = graph.create_buffer("exposure", 16);
     let (input, output) = (hdr.clone(), exposure.clone());
     let push = ExposurePush {
         size: [hdr.desc.width, hdr.desc.height],
@@ -49,7 +48,7 @@ pub fn add_exposure<'a>(
     graph
         .add_pass("exposure")
         .read(hdr, Access::ComputeSampledRead, Mips::ALL)
-        .write(&mut exposure, Access::ComputeStorageWrite, Mips::ALL)
+        .write_buffer(&mut exposure, Access::ComputeStorageWrite)
         .record(move |ctx| {
             // One workgroup (256 invocations) meters the whole image.
             dispatch_2d(
@@ -57,7 +56,7 @@ pub fn add_exposure<'a>(
                 &pipelines.exposure,
                 &[
                     Descriptor::SampledImage(ctx.full_view(&input), pipelines.linear_clamp.sampler),
-                    Descriptor::StorageImage(ctx.view(&output, 0)),
+                    Descriptor::StorageBuffer(ctx.buffer(&output)),
                 ],
                 bytemuck::bytes_of(&push),
                 1,

@@ -43,6 +43,9 @@ pub struct Pipelines {
     pub accumulate: ComputePipeline,
     pub exposure: ComputePipeline,
     pub linear_clamp: Sampler,
+    /// Bound where a pass's optional buffer is absent (a shader's
+    /// specialisation then never reads it).
+    pub placeholder_buffer: crate::vk::Buffer,
     pub sky_sampler: Sampler,
     pub repeat_sampler: Sampler,
 }
@@ -86,10 +89,17 @@ impl Pipelines {
                 gpu,
                 "exposure",
                 crate::shaders::EXPOSURE,
-                &[BindingKind::SampledImage, BindingKind::StorageImage],
+                &[BindingKind::SampledImage, BindingKind::StorageBuffer],
                 std::mem::size_of::<exposure::ExposurePush>() as u32,
             )?,
             linear_clamp: Sampler::linear_clamp(gpu)?,
+            placeholder_buffer: crate::vk::Buffer::new(
+                gpu,
+                "placeholder",
+                16,
+                ash::vk::BufferUsageFlags::STORAGE_BUFFER,
+                gpu_allocator::MemoryLocation::GpuOnly,
+            )?,
             sky_sampler: Sampler::linear_repeat_u(gpu)?,
             repeat_sampler: Sampler::linear_repeat(gpu)?,
         })
@@ -161,7 +171,7 @@ impl Pipelines {
                 BindingKind::SampledImage,
                 BindingKind::StorageImage,
                 BindingKind::SampledImage,
-                BindingKind::SampledImage,
+                BindingKind::StorageBuffer,
             ];
             ComputePipeline::with_constants(
                 &self.gpu,

@@ -134,13 +134,13 @@ impl Renderer {
         &self.gpu
     }
 
-    /// The device in use.
-    /// Images the frame slots' transient pools hold (the objects frames
-    /// create; a long run must not grow it).
-    pub fn transient_images(&self) -> usize {
+    /// Images and buffers the frame slots' transient pools hold (the
+    /// objects frames create; a long run must not grow it).
+    pub fn transient_resources(&self) -> usize {
         self.slots.iter().map(|s| s.transients.len()).sum()
     }
 
+    /// The device in use.
     pub fn device_name(&self) -> &str {
         &self.gpu.info.name
     }

@@ -22,6 +22,8 @@ pub enum Access {
     ComputeStorageReadWrite,
     /// Uniform buffer read in a compute shader.
     ComputeUniformRead,
+    /// Dispatch arguments read by `vkCmdDispatchIndirect` (buffers only).
+    IndirectRead,
     /// Source of a copy or blit.
     TransferRead,
     /// Destination of a copy, blit or clear.
@@ -56,13 +58,14 @@ pub struct AccessInfo {
 
 impl Access {
     /// Every access kind, for exhaustive tests.
-    pub const ALL: [Access; 14] = [
+    pub const ALL: [Access; 15] = [
         Access::Nothing,
         Access::ComputeSampledRead,
         Access::ComputeStorageRead,
         Access::ComputeStorageWrite,
         Access::ComputeStorageReadWrite,
         Access::ComputeUniformRead,
+        Access::IndirectRead,
         Access::TransferRead,
         Access::TransferWrite,
         Access::HostRead,
@@ -99,6 +102,12 @@ impl Access {
                 true,
             ),
             Access::ComputeUniformRead => (S::COMPUTE_SHADER, A::UNIFORM_READ, L::UNDEFINED, false),
+            Access::IndirectRead => (
+                S::DRAW_INDIRECT,
+                A::INDIRECT_COMMAND_READ,
+                L::UNDEFINED,
+                false,
+            ),
             // Every transfer command (copy, blit, clear): the present pass blits.
             Access::TransferRead => (
                 S::ALL_TRANSFER,
@@ -158,6 +167,7 @@ impl Access {
             Access::ColorAttachmentWrite => U::COLOR_ATTACHMENT,
             Access::Nothing
             | Access::ComputeUniformRead
+            | Access::IndirectRead
             | Access::HostRead
             | Access::HostWrite
             | Access::Present
@@ -173,6 +183,7 @@ impl Access {
             | Access::ComputeStorageWrite
             | Access::ComputeStorageReadWrite => U::STORAGE_BUFFER,
             Access::ComputeUniformRead => U::UNIFORM_BUFFER,
+            Access::IndirectRead => U::INDIRECT_BUFFER,
             Access::TransferRead => U::TRANSFER_SRC,
             Access::TransferWrite => U::TRANSFER_DST,
             _ => U::empty(),
@@ -181,7 +192,7 @@ impl Access {
 
     /// Whether this access is allowed on an image.
     pub fn valid_for_image(self) -> bool {
-        !matches!(self, Access::ComputeUniformRead)
+        !matches!(self, Access::ComputeUniformRead | Access::IndirectRead)
     }
 
     /// Whether this access is allowed on a buffer.
