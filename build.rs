@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 const VARIANTS: &[(&str, &str, &[&str])] = &[
     ("raymarch.comp", "raymarch_aov.comp", &["GEODESIC_AOV"]),
     ("raymarch.comp", "raymarch_no_quad.comp", &["NO_QUAD"]),
+    ("raymarch.comp", "raymarch_split.comp", &["DISK_SPLIT"]),
     ("composite.comp", "composite_hdr.comp", &["HDR_OUTPUT"]),
 ];
 

@@ -1,12 +1,26 @@
 #version 460
-// Ray march: one invocation per pixel. Each camera ray follows the light-path
-// equation of geodesic.glsl until it falls into a horizon, hits the thin disk,
-// escapes to the sky, or runs out of its step budget. Writes linear HDR.
+// Ray march: one invocation per pixel. Each camera ray follows its light
+// path (closed form for one hole, lightpath.glsl; a straight line with
+// gravity off; else the integrator of geodesic.glsl) until it falls into a
+// horizon, hits the disk or escapes to the sky. Writes linear HDR.
+//
+// With one hole and a thin disk the work is split in two dispatches
+// (DISK_STAGE): the trace pass shades every pixel's sky and lists the pixels
+// whose path crosses the disk's annulus; the disk pass, dispatched
+// indirectly over that list, adds the disk in front. On a CPU driver every
+// branch costs every pixel, so this is what keeps the disk's cost to the
+// pixels that show it.
 
 #if !defined(GEODESIC_AOV) && !defined(NO_QUAD)
 // Ray differentials from 2x2 quads of pixels (see main).
 #extension GL_KHR_shader_subgroup_quad : require
 #define RAY_DIFFERENTIALS
+#endif
+#ifdef DISK_SPLIT
+// The build of the split stages (raymarch_split.comp.spv): the disk pass's
+// work list, appended a SIMD group at a time. The other builds do not
+// declare its buffers, so no pipeline that leaves them alone touches them.
+#extension GL_KHR_shader_subgroup_ballot : require
 #endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -35,6 +49,11 @@ layout(constant_id = 6) const int THIN_CROSSINGS = 1;
 layout(constant_id = 7) const bool VOLUME_BLACKBODY = false;
 // Gravity off: rays are straight lines, traced in closed form.
 layout(constant_id = 8) const bool STRAIGHT = false;
+// Which part of the split thin-disk ray march this pipeline runs.
+#define DISK_STAGE_ALL 0    // everything in one dispatch
+#define DISK_STAGE_TRACE 1  // sky and captures, every pixel; lists disk pixels
+#define DISK_STAGE_DISK 2   // the thin disk over the listed pixels
+layout(constant_id = 9) const int DISK_STAGE = DISK_STAGE_ALL;
 
 #include "params.glsl"
 #include "geodesic.glsl"
@@ -44,7 +63,21 @@ layout(constant_id = 8) const bool STRAIGHT = false;
 // The geodesic AOV (the geodesic AOV table in the README): where each ray went.
 layout(binding = 0, rgba32f) uniform writeonly image2D out_img;
 #else
-layout(binding = 0, rgba16f) uniform writeonly image2D out_img;
+// Read back by the disk pass (the light behind the disk).
+layout(binding = 0, rgba16f) uniform image2D out_img;
+#endif
+#ifdef DISK_SPLIT
+// The disk pass's work: pixels packed x | y << 16, and their count.
+layout(std430, binding = 6) buffer DiskList {
+    uint count;
+    uint px[];
+} disk_list;
+// Its indirect dispatch: workgroups of 64 listed pixels.
+layout(std430, binding = 7) buffer DiskDispatch {
+    uint groups_x;
+    uint groups_y;
+    uint groups_z;
+} disk_dispatch;
 #endif
 // Linear sRGB colour of luminance 1 per blackbody temperature, log-spaced
 // from LUT_MIN_K to LUT_MAX_K (src/physics/blackbody.rs).
@@ -127,8 +160,9 @@ struct Hit {
     vec3 pos;   // disk crossing point
     vec3 dir;   // final direction (escaped)
     float g;    // redshift at a disk hit
-    vec3 glow;  // light gathered from the volumetric disk on the way
-    float trans; // transmittance of that volume (1: clear)
+    vec3 glow;  // light gathered from the disk on the way
+    float trans; // transmittance of that disk (1: clear)
+    bool disk_ahead; // the trace pass left thin-disk crossings to the disk pass
 };
 
 bool volumetric() {
@@ -337,6 +371,7 @@ Hit trace_planar(vec3 x, vec3 d) {
     hit.g = 0.0;
     hit.glow = vec3(0.0);
     hit.trans = 1.0;
+    hit.disk_ahead = false;
     vec3 c = P.holes[0].xyz;
     float rs = P.holes[0].w;
     vec3 rel = x - c;
@@ -378,11 +413,17 @@ Hit trace_planar(vec3 x, vec3 d) {
             // lane, taken or not, but a loop's later turns run only while a
             // lane of the SIMD group still needs them (the first always runs).
             float next = phi0 <= 1e-6 ? phi0 + PI : phi0;  // the next crossing ahead
-            vec3 node = (nb * e1 - na * e2) / tilt;          // cos(phi0) e1 + sin(phi0) e2
-            float az0 = THIN_STRUCTURE ? disk_azimuth(c + node) : 0.0;
-            for (int k = 0; k < THIN_CROSSINGS; ++k) {
-                if (thin_crossing(path, next, phi0, c, node, az0, rs, lambda, b_imp, hit)) return hit;
-                if (next >= 1e29) break;
+            if (DISK_STAGE == DISK_STAGE_TRACE) {
+                // Left to the disk pass: any crossing in the windows.
+                hit.disk_ahead = min(first_crossing_in(path, path.win_a, next),
+                                     first_crossing_in(path, path.win_b, next)) < 1e29;
+            } else {
+                vec3 node = (nb * e1 - na * e2) / tilt;      // cos(phi0) e1 + sin(phi0) e2
+                float az0 = THIN_STRUCTURE ? disk_azimuth(c + node) : 0.0;
+                for (int k = 0; k < THIN_CROSSINGS; ++k) {
+                    if (thin_crossing(path, next, phi0, c, node, az0, rs, lambda, b_imp, hit)) return hit;
+                    if (next >= 1e29) break;
+                }
             }
         } else if (volumetric()) {
             // From the crossing behind the camera when the camera is in the
@@ -435,6 +476,7 @@ Hit trace_straight(vec3 x, vec3 d) {
     hit.g = 0.0;
     hit.glow = vec3(0.0);
     hit.trans = 1.0;
+    hit.disk_ahead = false;
     float t_h = 1e30;
     for (uint k = 0u; k < P.counts.x; ++k) {
         vec3 rel = x - P.holes[k].xyz;
@@ -494,6 +536,7 @@ Hit trace(vec3 x, vec3 v) {
     hit.g = 0.0;
     hit.glow = vec3(0.0);
     hit.trans = 1.0;
+    hit.disk_ahead = false;
     bool vol = volumetric();
     float tol = P.integ.x;
     float r_esc = P.integ.y;
@@ -579,26 +622,10 @@ Hit trace(vec3 x, vec3 v) {
     return hit;
 }
 
-void main() {
+// The coordinate direction of pixel px's camera ray (binding camera
+// convention, the conventions in the README, "Physics"); sets observer_g.
+vec3 pixel_ray(uvec2 px) {
     uint w = P.counts.y, hgt = P.counts.z;
-#ifdef RAY_DIFFERENTIALS
-    // The 64 invocations of a group cover its 8x8 tile in 2x2 quads
-    // (subgroup quads are four consecutive invocations), so each pixel can
-    // read its right or left and its lower or upper neighbour's final
-    // direction. Lanes past the image's edge trace a clamped pixel for their
-    // quad and store nothing.
-    uint li = gl_LocalInvocationIndex;
-    uint quad = li >> 2u;
-    uvec2 in_quad = uvec2(li & 1u, (li >> 1u) & 1u);
-    uvec2 px_raw = gl_WorkGroupID.xy * 8u + 2u * uvec2(quad & 3u, quad >> 2u) + in_quad;
-    bool inside = px_raw.x < w && px_raw.y < hgt;
-    uvec2 px = min(px_raw, uvec2(w - 1u, hgt - 1u));
-#else
-    uvec2 px = gl_GlobalInvocationID.xy;
-    if (px.x >= w || px.y >= hgt) return;
-#endif
-
-    // Binding camera convention (the conventions in the README, "Physics").
     float tan_half = P.cam_pos.w, aspect = P.cam_right.w;
     // Sub-pixel jitter (cam_up.w, cam_fwd.w; 0 = the pixel centre) for
     // accumulated anti-aliasing in the window.
@@ -624,6 +651,66 @@ void main() {
         dir = normalize(P.observer_r.w * dr * rh + (dir - dr * rh));
         observer_g = doppler / P.observer_r.w;
     }
+    return dir;
+}
+
+#ifdef DISK_SPLIT
+// The trace pass: lists this SIMD group's pixels that need the disk pass
+// (one atomic per group; the dispatch grows to cover the list).
+void list_for_disk(uvec2 px, bool need) {
+    uvec4 ballot = subgroupBallot(need);
+    uint n = subgroupBallotBitCount(ballot);
+    uint base = 0u;
+    if (subgroupElect() && n > 0u) {
+        base = atomicAdd(disk_list.count, n);
+        atomicMax(disk_dispatch.groups_x, (base + n + 63u) / 64u);
+    }
+    base = subgroupBroadcastFirst(base);
+    if (need) disk_list.px[base + subgroupBallotExclusiveBitCount(ballot)] = px.x | (px.y << 16u);
+}
+
+// The disk pass: one listed pixel per invocation. Its path again (the same
+// closed form), now with the thin disk's crossings, in front of what the
+// trace pass wrote (the sky, or black where the ray is captured); an opaque
+// disk hides it.
+void disk_pass() {
+    uint i = gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex;
+    if (i >= disk_list.count) return;
+    uint packed = disk_list.px[i];
+    ivec2 px = ivec2(packed & 0xffffu, packed >> 16u);
+    Hit hit = trace_planar(P.cam_pos.xyz, pixel_ray(uvec2(px)));
+    vec3 behind = hit.trans < 0.003 ? vec3(0.0) : imageLoad(out_img, px).rgb;
+    imageStore(out_img, px, vec4(hit.glow + hit.trans * behind, 1.0));
+}
+#endif
+
+void main() {
+#ifdef DISK_SPLIT
+    if (DISK_STAGE == DISK_STAGE_DISK) {
+        disk_pass();
+        return;
+    }
+#endif
+    uint w = P.counts.y, hgt = P.counts.z;
+#ifdef RAY_DIFFERENTIALS
+    // The 64 invocations of a group cover its 8x8 tile in 2x2 quads
+    // (subgroup quads are four consecutive invocations), so each pixel can
+    // read its right or left and its lower or upper neighbour's final
+    // direction. Lanes past the image's edge trace a clamped pixel for their
+    // quad and store nothing.
+    uint li = gl_LocalInvocationIndex;
+    uint quad = li >> 2u;
+    uvec2 in_quad = uvec2(li & 1u, (li >> 1u) & 1u);
+    uvec2 px_raw = gl_WorkGroupID.xy * 8u + 2u * uvec2(quad & 3u, quad >> 2u) + in_quad;
+    bool inside = px_raw.x < w && px_raw.y < hgt;
+    uvec2 px = min(px_raw, uvec2(w - 1u, hgt - 1u));
+#else
+    uvec2 px = gl_GlobalInvocationID.xy;
+    if (px.x >= w || px.y >= hgt) return;
+#endif
+
+    vec3 dir = pixel_ray(px);
+    float tan_half = P.cam_pos.w;
 
     // The volume's sample offset: per pixel, and per accumulated frame (salted
     // by the sub-pixel jitter, zero for a single offscreen frame) so the
@@ -689,6 +776,9 @@ void main() {
         color = dens * disk_color(r, hit.g);
     }
     color = hit.glow + hit.trans * color;
+#ifdef DISK_SPLIT
+    if (DISK_STAGE == DISK_STAGE_TRACE) list_for_disk(px, hit.disk_ahead && inside);
+#endif
 #ifdef RAY_DIFFERENTIALS
     if (!inside) return;
 #endif

@@ -10,6 +10,10 @@ pub const RAYMARCH_NO_QUAD: &[u8] =
     include_bytes!(concat!(env!("OUT_DIR"), "/raymarch_no_quad.comp.spv"));
 /// The ray march writing the geodesic AOV (`raymarch.comp` with `GEODESIC_AOV`).
 pub const RAYMARCH_AOV: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/raymarch_aov.comp.spv"));
+/// The ray march's split thin-disk stages (`DISK_SPLIT`: the trace pass
+/// that lists disk pixels and the indirect disk pass).
+pub const RAYMARCH_SPLIT: &[u8] =
+    include_bytes!(concat!(env!("OUT_DIR"), "/raymarch_split.comp.spv"));
 /// Bloom bright pass to a quarter of the size (`shaders/bloom_prefilter.comp`).
 pub const BLOOM_PREFILTER: &[u8] =
     include_bytes!(concat!(env!("OUT_DIR"), "/bloom_prefilter.comp.spv"));

@@ -18,7 +18,9 @@ fn every_level_is_its_own_timed_pass() {
     assert_eq!(
         names,
         [
+            "disk list clear",
             "raymarch",
+            "raymarch disk",
             "bloom prefilter",
             "bloom down 1",
             "bloom down 2",

@@ -12,7 +12,7 @@ pub mod raymarch;
 use std::sync::Arc;
 
 use crate::Result;
-use crate::shaders::{RAYMARCH, RAYMARCH_AOV, RAYMARCH_NO_QUAD};
+use crate::shaders::{RAYMARCH, RAYMARCH_AOV, RAYMARCH_NO_QUAD, RAYMARCH_SPLIT};
 use crate::vk::{BindingKind, ComputePipeline, Gpu, Sampler};
 
 /// The parameter block is a read-only storage buffer, not a uniform buffer:
@@ -20,14 +20,17 @@ use crate::vk::{BindingKind, ComputePipeline, Gpu, Sampler};
 /// leaked about 0.55 MB inside the driver until the device was destroyed
 /// (1,000 frames at 160x90 took 640 MB; the same with a storage buffer, 120
 /// MB) and cost twice the time. Found by skipping one pass's dispatch at a
-/// time; the layout is the same (every member a vec4).
-const RAYMARCH_BINDINGS: [BindingKind; 6] = [
+/// time; the layout is the same (every member a vec4). Bindings 6 and 7 are
+/// the split thin-disk ray march's work list and indirect dispatch.
+const RAYMARCH_BINDINGS: [BindingKind; 8] = [
     BindingKind::StorageImage,
     BindingKind::StorageBuffer,
     BindingKind::SampledImage,
     BindingKind::SampledImage,
     BindingKind::SampledImage,
     BindingKind::SampledImage,
+    BindingKind::StorageBuffer,
+    BindingKind::StorageBuffer,
 ];
 
 /// Pipelines and samplers the passes use, created once per renderer.
@@ -142,6 +145,8 @@ impl Pipelines {
         self.raymarch.get(variant, || {
             let spirv = if variant.aov {
                 RAYMARCH_AOV
+            } else if variant.disk_stage != raymarch::glsl::DISK_STAGE_ALL {
+                RAYMARCH_SPLIT
             } else if self.gpu.info.quad_compute {
                 RAYMARCH
             } else {
@@ -156,6 +161,12 @@ impl Pipelines {
                 &variant.constants(),
             )
         })
+    }
+
+    /// The ray-march pipelines one frame of `variant` runs on this device
+    /// ([`raymarch::Variant::stages`]).
+    pub fn raymarch_stages(&self, variant: raymarch::Variant) -> Vec<raymarch::Variant> {
+        variant.stages(self.gpu.info.disk_split)
     }
 
     /// The composite specialised for its output, tone map, bloom and
@@ -205,6 +216,21 @@ pub(crate) fn dispatch_2d(
             .device
             .cmd_dispatch(ctx.cmd, groups(width, 8), groups(height, 8), 1)
     };
+    Ok(())
+}
+
+/// Binds `pipeline` with `descriptors` and dispatches the workgroup counts
+/// the first three u32 of `args` hold (written on the device).
+pub(crate) fn dispatch_indirect(
+    ctx: &crate::graph::PassContext<'_>,
+    pipeline: &ComputePipeline,
+    descriptors: &[crate::vk::Descriptor],
+    args: ash::vk::Buffer,
+) -> Result<()> {
+    crate::vk::bind_compute(ctx.gpu, ctx.cmd, pipeline, descriptors)?;
+    // SAFETY: the pipeline and its descriptors are bound on a recording
+    // buffer; `args` holds a VkDispatchIndirectCommand at offset 0.
+    unsafe { ctx.gpu.device.cmd_dispatch_indirect(ctx.cmd, args, 0) };
     Ok(())
 }
 

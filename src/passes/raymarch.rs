@@ -7,11 +7,20 @@
 //! null geodesic equation (from Binet's equation u'' + u = 1.5 rs u^2)
 //! integrated in Cartesian coordinates with adaptive Dormand-Prince 5(4),
 //! so the holes' pulls can be summed.
+//!
+//! One hole with a thin disk is split in two dispatches (on devices with
+//! subgroup ballots): `raymarch` traces every pixel's path to the sky or the
+//! horizon and lists the pixels whose path crosses the disk's annulus;
+//! `raymarch disk`, dispatched indirectly over that list, adds the disk's
+//! light in front of what `raymarch` wrote. On a CPU driver every branch of
+//! a shader costs every pixel, taken or not, so in one dispatch the disk's
+//! crossings cost the whole frame; split, they cost the pixels that cross it
+//! (a quarter of the default view).
 
 use ash::vk;
 use bytemuck::{Pod, Zeroable};
 
-use super::{Pipelines, dispatch_2d};
+use super::{Pipelines, dispatch_2d, dispatch_indirect};
 use crate::graph::{BufferHandle, Graph, ImageDesc, ImageHandle, Mips};
 use crate::scene::{DiskKind, MAX_HOLES, Scene, SkyKind, VolumeColor};
 use crate::vk::{Access, Descriptor};
@@ -28,6 +37,9 @@ pub mod glsl {
     pub const SKY_STARS: u32 = 2;
     pub const SKY_IMAGE: u32 = 3;
     pub const SKY_CATALOGUE: u32 = 4;
+    pub const DISK_STAGE_ALL: u32 = 0;
+    pub const DISK_STAGE_TRACE: u32 = 1;
+    pub const DISK_STAGE_DISK: u32 = 2;
     pub const LUT_MIN_K: f64 = crate::physics::blackbody::LUT_MIN_K;
     pub const LUT_MAX_K: f64 = crate::physics::blackbody::LUT_MAX_K;
 }
@@ -265,6 +277,9 @@ pub struct Variant {
     pub volume_blackbody: bool,
     /// Gravity off: straight rays, traced in closed form (constant 8).
     pub straight: bool,
+    /// The part of the split thin-disk ray march, `glsl::DISK_STAGE_*`
+    /// (constant 9).
+    pub disk_stage: u32,
 }
 
 impl Variant {
@@ -285,12 +300,26 @@ impl Variant {
             },
             volume_blackbody: scene.disk.color == VolumeColor::Blackbody,
             straight: !scene.physics.gravity,
+            disk_stage: glsl::DISK_STAGE_ALL,
+        }
+    }
+
+    /// The pipelines one frame of this variant runs, in order: the trace and
+    /// disk passes for one hole with a thin disk when `split` (the device
+    /// has subgroup ballots), else itself.
+    pub fn stages(self, split: bool) -> Vec<Variant> {
+        if split && self.one_hole && !self.aov && self.disk == glsl::DISK_THIN {
+            [glsl::DISK_STAGE_TRACE, glsl::DISK_STAGE_DISK]
+                .map(|disk_stage| Variant { disk_stage, ..self })
+                .to_vec()
+        } else {
+            vec![self]
         }
     }
 
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against raymarch.comp).
-    pub const CONSTANT_NAMES: [&'static str; 9] = [
+    pub const CONSTANT_NAMES: [&'static str; 10] = [
         "ONE_HOLE",
         "DISK_KIND",
         "SKY_KIND",
@@ -300,9 +329,10 @@ impl Variant {
         "THIN_CROSSINGS",
         "VOLUME_BLACKBODY",
         "STRAIGHT",
+        "DISK_STAGE",
     ];
 
-    pub fn constants(&self) -> [u32; 9] {
+    pub fn constants(&self) -> [u32; 10] {
         [
             u32::from(self.one_hole),
             self.disk,
@@ -313,12 +343,13 @@ impl Variant {
             self.thin_crossings,
             u32::from(self.volume_blackbody),
             u32::from(self.straight),
+            self.disk_stage,
         ]
     }
 
     pub fn name(&self) -> String {
         format!(
-            "raymarch{} (one hole {}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, straight {})",
+            "raymarch{} (one hole {}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, straight {}, disk stage {})",
             if self.aov { " aov" } else { "" },
             self.one_hole,
             self.disk,
@@ -328,7 +359,8 @@ impl Variant {
             self.structure,
             self.thin_crossings,
             self.volume_blackbody,
-            self.straight
+            self.straight,
+            self.disk_stage
         )
     }
 }
@@ -350,18 +382,98 @@ pub fn add_raymarch<'a>(
         RaymarchOutput::Beauty => ("hdr", HDR_FORMAT),
         RaymarchOutput::Geodesic => ("geodesic aov", AOV_FORMAT),
     };
-
     let mut hdr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
+    let stages = pipelines.raymarch_stages(variant);
+    let [trace, disk] = stages[..] else {
+        add_stage(graph, pipelines, params, images, &mut hdr, variant, None);
+        return hdr;
+    };
+
+    // The disk pass's work list (a count, then one packed pixel each) and
+    // its indirect dispatch, emptied first.
+    let mut list = graph.create_buffer("disk list", 4 + 4 * u64::from(width) * u64::from(height));
+    let mut dispatch = graph.create_buffer("disk dispatch", 16);
+    let (l, d) = (list.clone(), dispatch.clone());
+    graph
+        .add_pass("disk list clear")
+        .write_buffer(&mut list, Access::TransferWrite)
+        .write_buffer(&mut dispatch, Access::TransferWrite)
+        .record(move |ctx| {
+            let (list, dispatch) = (ctx.buffer(&l), ctx.buffer(&d));
+            // SAFETY: recording; both ranges lie inside the buffers.
+            unsafe {
+                ctx.gpu.device.cmd_fill_buffer(ctx.cmd, list, 0, 4, 0);
+                ctx.gpu.device.cmd_update_buffer(
+                    ctx.cmd,
+                    dispatch,
+                    0,
+                    bytemuck::bytes_of(&[0u32, 1, 1, 0]),
+                );
+            }
+            Ok(())
+        });
+    let mut work = DiskWork {
+        list,
+        dispatch,
+        indirect: false,
+    };
+    add_stage(
+        graph,
+        pipelines,
+        params,
+        images,
+        &mut hdr,
+        trace,
+        Some(&mut work),
+    );
+    work.indirect = true;
+    add_stage(
+        graph,
+        pipelines,
+        params,
+        images,
+        &mut hdr,
+        disk,
+        Some(&mut work),
+    );
+    hdr
+}
+
+/// The split ray march's work list and dispatch; `indirect` for the disk
+/// pass, which reads them, else the trace pass, which appends.
+struct DiskWork {
+    list: BufferHandle,
+    dispatch: BufferHandle,
+    indirect: bool,
+}
+
+/// Adds one ray-march dispatch of `variant` writing `hdr` (read too by the
+/// disk pass).
+fn add_stage<'a>(
+    graph: &mut Graph<'a>,
+    pipelines: &'a Pipelines,
+    params: &BufferHandle,
+    images: &SceneImages,
+    hdr: &mut ImageHandle,
+    variant: Variant,
+    work: Option<&mut DiskWork>,
+) {
     let SceneImages {
         disk_lut,
         disk_noise,
         volume_noise,
         sky,
     } = images;
+    let (width, height) = (hdr.desc.width, hdr.desc.height);
     let (out, lut, sky_tex, ubo) = (hdr.clone(), disk_lut.clone(), sky.clone(), params.clone());
     let (noise, volume) = (disk_noise.clone(), volume_noise.clone());
+    let indirect = work.as_ref().is_some_and(|w| w.indirect);
     let mut pass = graph
-        .add_pass("raymarch")
+        .add_pass(if indirect {
+            "raymarch disk"
+        } else {
+            "raymarch"
+        })
         .read_buffer(params, Access::ComputeStorageRead)
         .read(disk_lut, Access::ComputeSampledRead, Mips::ALL)
         .read(disk_noise, Access::ComputeSampledRead, Mips::ALL)
@@ -369,29 +481,52 @@ pub fn add_raymarch<'a>(
     if sky != disk_lut {
         pass = pass.read(sky, Access::ComputeSampledRead, Mips::ALL);
     }
-    pass.write(&mut hdr, Access::ComputeStorageWrite, Mips::ALL)
-        .record(move |ctx| {
-            // Built on first use (Renderer::prepare_scene builds it ahead).
-            let pipeline = pipelines.raymarch(variant)?;
-            let repeat = pipelines.repeat_sampler.sampler;
-            dispatch_2d(
-                ctx,
-                &pipeline,
-                &[
-                    Descriptor::StorageImage(ctx.view(&out, 0)),
-                    Descriptor::StorageBuffer(ctx.buffer(&ubo)),
-                    Descriptor::SampledImage(ctx.full_view(&lut), pipelines.linear_clamp.sampler),
-                    Descriptor::SampledImage(
-                        ctx.full_view(&sky_tex),
-                        pipelines.sky_sampler.sampler,
-                    ),
-                    Descriptor::SampledImage(ctx.full_view(&noise), repeat),
-                    Descriptor::SampledImage(ctx.full_view(&volume), repeat),
-                ],
-                &[],
-                width,
-                height,
-            )
-        });
-    hdr
+    let buffers = match work {
+        Some(w) if w.indirect => {
+            pass = pass
+                .read_buffer(&w.list, Access::ComputeStorageRead)
+                .read_buffer(&w.dispatch, Access::IndirectRead);
+            Some((w.list.clone(), w.dispatch.clone()))
+        }
+        Some(w) => {
+            pass = pass
+                .write_buffer(&mut w.list, Access::ComputeStorageReadWrite)
+                .write_buffer(&mut w.dispatch, Access::ComputeStorageReadWrite);
+            Some((w.list.clone(), w.dispatch.clone()))
+        }
+        None => None,
+    };
+    let access = if indirect {
+        Access::ComputeStorageReadWrite
+    } else {
+        Access::ComputeStorageWrite
+    };
+    pass.write(hdr, access, Mips::ALL).record(move |ctx| {
+        // Built on first use (Renderer::prepare_scene builds it ahead).
+        let pipeline = pipelines.raymarch(variant)?;
+        let repeat = pipelines.repeat_sampler.sampler;
+        // Without the split its buffers are never read.
+        let (list, dispatch) = match &buffers {
+            Some((l, d)) => (ctx.buffer(l), ctx.buffer(d)),
+            None => {
+                let placeholder = pipelines.placeholder_buffer.buffer;
+                (placeholder, placeholder)
+            }
+        };
+        let descriptors = [
+            Descriptor::StorageImage(ctx.view(&out, 0)),
+            Descriptor::StorageBuffer(ctx.buffer(&ubo)),
+            Descriptor::SampledImage(ctx.full_view(&lut), pipelines.linear_clamp.sampler),
+            Descriptor::SampledImage(ctx.full_view(&sky_tex), pipelines.sky_sampler.sampler),
+            Descriptor::SampledImage(ctx.full_view(&noise), repeat),
+            Descriptor::SampledImage(ctx.full_view(&volume), repeat),
+            Descriptor::StorageBuffer(list),
+            Descriptor::StorageBuffer(dispatch),
+        ];
+        if indirect {
+            dispatch_indirect(ctx, &pipeline, &descriptors, dispatch)
+        } else {
+            dispatch_2d(ctx, &pipeline, &descriptors, &[], width, height)
+        }
+    });
 }

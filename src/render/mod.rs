@@ -208,8 +208,12 @@ impl Renderer {
         }
         // The ray march specialised for this scene, built now rather than
         // while a frame records (a new variant takes lavapipe a moment).
-        self.pipelines
-            .raymarch(raymarch::Variant::of(scene, false))?;
+        for variant in self
+            .pipelines
+            .raymarch_stages(raymarch::Variant::of(scene, false))
+        {
+            self.pipelines.raymarch(variant)?;
+        }
         Ok(())
     }
 

@@ -31,6 +31,10 @@ pub struct DeviceInfo {
     /// Subgroup quad operations in compute shaders (the ray march's ray
     /// differentials need them; without, stars keep the unlensed footprint).
     pub quad_compute: bool,
+    /// Quad and ballot operations in compute shaders: the thin disk's ray
+    /// march is split into a trace pass that lists the disk's pixels and an
+    /// indirect disk pass over them (without, one dispatch does both).
+    pub disk_split: bool,
 }
 
 /// The logical device and everything created with it once.
@@ -72,6 +76,7 @@ struct Candidate {
     timestamp_valid_bits: u32,
     props: vk::PhysicalDeviceProperties,
     quad_compute: bool,
+    disk_split: bool,
     /// Why it cannot be used, if it cannot.
     unusable: Option<String>,
 }
@@ -218,6 +223,7 @@ impl Gpu {
                 timestamp_valid_bits: chosen.timestamp_valid_bits,
                 max_push_constants: chosen.props.limits.max_push_constants_size,
                 quad_compute: chosen.quad_compute,
+                disk_split: chosen.disk_split,
             },
             push_descriptor,
             debug_utils,
@@ -276,6 +282,14 @@ impl Gpu {
             && subgroup
                 .supported_operations
                 .contains(vk::SubgroupFeatureFlags::QUAD);
+        // The split thin-disk ray march's build also lists pixels with
+        // ballots; BLACKHOLE_NO_SPLIT=1 keeps the one dispatch (for
+        // comparisons).
+        let disk_split = quad_compute
+            && std::env::var_os("BLACKHOLE_NO_SPLIT").is_none()
+            && subgroup
+                .supported_operations
+                .contains(vk::SubgroupFeatureFlags::BALLOT);
         let unusable = if api < vk::API_VERSION_1_2 {
             Some("Vulkan 1.2 or newer is needed".to_string())
         } else if api < vk::API_VERSION_1_3 && !has(khr::synchronization2::NAME) {
@@ -305,6 +319,7 @@ impl Gpu {
                 .map_or(0, |f| f.timestamp_valid_bits),
             props,
             quad_compute,
+            disk_split,
             unusable,
         })
     }
