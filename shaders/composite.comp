@@ -44,6 +44,8 @@ layout(constant_id = 0) const bool UPSCALE = false;
 layout(constant_id = 1) const uint TONEMAP = TONEMAP_ACES_HILL;
 layout(constant_id = 2) const bool BLOOM = true;
 layout(constant_id = 3) const bool AUTO_EXPOSURE = false;
+// The saturation is not 1.
+layout(constant_id = 4) const bool SATURATE = false;
 
 vec3 aces_narkowicz(vec3 x) {
     const float a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
@@ -112,8 +114,10 @@ void main() {
         c += pc.bloom_strength * textureLod(bloom, uv, 0.0).rgb;
     }
     c *= AUTO_EXPOSURE ? pc.exposure * metered.exposure : pc.exposure;
-    float l = luminance(c);
-    c = max(l + pc.saturation * (c - l), 0.0);
+    if (SATURATE) {
+        float l = luminance(c);
+        c = max(l + pc.saturation * (c - l), 0.0);
+    }
 #ifdef HDR_OUTPUT
     imageStore(ldr, px, vec4(c, 1.0));
     return;

@@ -185,12 +185,16 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
     float theta = 2.0 * asin_precise(min(sqrt(6.75 * max(c, 0.0)), 1.0));
     float theta_c = 2.0 * asin_precise(min(sqrt(6.75 * max(e, 0.0)), 1.0));
     const float S = 1.1547005383792515;  // 2 / sqrt(3)
-    float t = theta * (1.0 / 3.0);
-    float d21 = S * sin(t);
-    float d31 = S * sin(t + 1.0471975511965976);
+    // One sine for t = theta / 3 in [0, pi/3]: its cosine from it, sin(t +
+    // pi/3) by the addition formula, and 4/3 sin^2(t/2) = 2/3 (1 - cos t)
+    // as 2/3 sin^2 t / (1 + cos t), without the cancellation for small t.
+    // (On a CPU driver a sine is a range reduction and a polynomial.)
+    float st = sin(theta * (1.0 / 3.0));
+    float ct = sqrt(max(1.0 - st * st, 0.0));
+    float d21 = S * st;
+    float d31 = S * (0.5 * st + 0.8660254037844386 * ct);
     float d32 = S * sin(theta_c * (1.0 / 3.0));
-    float sth = sin(theta * (1.0 / 6.0));
-    float sum12 = (4.0 / 3.0) * sth * sth;
+    float sum12 = (2.0 / 3.0) * st * st / (1.0 + ct);
     float u1_three = 0.5 * (sum12 - d21);
     float u2 = u1_three + d21;
     float u3 = 1.0 - sum12;
@@ -235,20 +239,23 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
         vec4 a3 = u3 - uu;
         float u2m0 = (a1.x > 0.0 && a3.x > 0.0) ? g0 / (a1.x * a3.x) : u2 - u0;
         vec4 u2m = vec4(max(u2m0, 0.0), u2 - uu.yzw);
-        sin2 = a1 / d21;
-        cos2 = u2m / d21;
-        delta2 = a3 / d31;
+        // Reciprocals once: a division is dear on a CPU driver.
+        float i21 = 1.0 / d21;
+        sin2 = a1 * i21;
+        cos2 = u2m * i21;
+        delta2 = a3 * (1.0 / d31);
     } else if (p.kind == PATH_TRAPPED) {
         float a2 = u0 - u2;
         float um30 = max((a1.x > 0.0 && a2 > 0.0) ? g0 / (a1.x * a2) : u0 - u3, 0.0);
         vec4 um3 = vec4(um30, uu.yzw - u3);
-        vec4 up2 = um3 + d32;
-        sin2 = um3 / up2;
-        cos2 = d32 / up2;
-        delta2 = d32 * a1 / (d31 * up2);
+        vec4 iu = 1.0 / (um3 + d32);
+        sin2 = um3 * iu;
+        cos2 = d32 * iu;
+        delta2 = p.mc * a1 * iu;  // mc = d32 / d31
     } else {
-        vec4 cp = (A - a1) / (A + a1);
-        sin2 = 4.0 * A * a1 / ((A + a1) * (A + a1));
+        vec4 ia = 1.0 / (A + a1);
+        vec4 cp = (A - a1) * ia;
+        sin2 = 4.0 * A * a1 * ia * ia;
         cos2 = cp * cp;
         delta2 = 1.0 - m * sin2;
     }

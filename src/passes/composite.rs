@@ -53,19 +53,28 @@ pub struct Variant {
     pub bloom: bool,
     /// The metered exposure multiplies (constant 3).
     pub auto_exposure: bool,
+    /// The saturation is not 1 (constant 4).
+    pub saturate: bool,
 }
 
 impl Variant {
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against composite.comp).
-    pub const CONSTANT_NAMES: [&'static str; 4] = ["UPSCALE", "TONEMAP", "BLOOM", "AUTO_EXPOSURE"];
+    pub const CONSTANT_NAMES: [&'static str; 5] = [
+        "UPSCALE",
+        "TONEMAP",
+        "BLOOM",
+        "AUTO_EXPOSURE",
+        "SATURATE",
+    ];
 
-    pub fn constants(&self) -> [u32; 4] {
+    pub fn constants(&self) -> [u32; 5] {
         [
             u32::from(self.upscale),
             self.tonemap,
             u32::from(self.bloom),
             u32::from(self.auto_exposure),
+            u32::from(self.saturate),
         ]
     }
 }
@@ -109,6 +118,7 @@ pub fn add_composite<'a>(
         },
         bloom: bloom.is_some(),
         auto_exposure: exposure.is_some(),
+        saturate: post.saturation != 1.0,
     };
     let mut ldr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
     let (input, output, blur, metered) =
