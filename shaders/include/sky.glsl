@@ -56,11 +56,18 @@ vec3 sky_checker(vec3 d) {
 // visited so stars near a cell edge are not cut.
 const float CELLS = 160.0;
 
+// The cube face d points into (+x, -x, +y, -y, +z, -z) and its place on it
+// in [-1, 1]^2. Selects rather than branches: on a CPU driver every branch
+// runs for every pixel, so three branches cost three divisions.
 vec3 cube_face(vec3 d, out uint face, out vec2 uv) {
     vec3 a = abs(d);
-    if (a.x >= a.y && a.x >= a.z) { face = d.x > 0.0 ? 0u : 1u; uv = d.zy / a.x; }
-    else if (a.y >= a.z)          { face = d.y > 0.0 ? 2u : 3u; uv = d.xz / a.y; }
-    else                          { face = d.z > 0.0 ? 4u : 5u; uv = d.xy / a.z; }
+    bool fx = a.x >= a.y && a.x >= a.z;
+    bool fy = !fx && a.y >= a.z;
+    float m = fx ? a.x : (fy ? a.y : a.z);
+    float s = fx ? d.x : (fy ? d.y : d.z);
+    vec2 p = fx ? d.zy : (fy ? d.xz : d.xy);
+    face = (fx ? 0u : (fy ? 2u : 4u)) + (s > 0.0 ? 0u : 1u);
+    uv = p / m;
     return a;
 }
 
