@@ -109,13 +109,16 @@ layout(binding = 5) uniform sampler3D volume_noise;
 vec3 disk_color(float r, float g_full) {
     float rs = P.holes[0].w;
     float r_in = P.disk.x;
-    float f = max((1.0 - sqrt(r_in / r)) / (r * r * r), 0.0);
-    float t_rel = sqrt(sqrt(f / P.disk_temp.y));   // T / T_peak
+    // One reciprocal for the divisions (dear on a CPU driver).
+    float ir = 1.0 / r;
+    float f = max((1.0 - sqrt(r_in * ir)) * (ir * ir * ir), 0.0);
+    float t_rel = sqrt(sqrt(f * (1.0 / P.disk_temp.y)));   // T / T_peak
     // The gravitational part as this observer measures it: emitter's clock
     // against the camera's.
-    float g_grav = sqrt(max(1.0 - rs / r, 1e-6)) / P.observer_r.w;
+    float lapse2 = max(1.0 - rs * ir, 1e-6), inv_lapse = inversesqrt(lapse2);
+    float g_grav = lapse2 * inv_lapse * (1.0 / P.observer_r.w);
     bool doppler = P.disk_temp.z > 0.5, redshift = P.disk_temp.w > 0.5, beaming = P.disk.w > 0.5;
-    float g_kin = g_full / g_grav;
+    float g_kin = g_full * inv_lapse * P.observer_r.w;
     float g_base = redshift ? g_grav : 1.0;
     float g = doppler ? g_base * g_kin : g_base;          // colour
     float g_i = beaming ? g_base * g_kin : g_base;        // brightness
@@ -330,14 +333,16 @@ bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 no
         return false;
     }
     next = phi + PI;
-    float r = rs / path_u(path, phi);
+    float u = path_u(path, phi);
+    float r = rs / u;
     // The windows' edges are rounded; the radius decides.
     if (r < P.disk.x || r > P.disk.y) return false;
     float j = round((phi - phi0) * (1.0 / PI));
     float odd = j - 2.0 * floor(0.5 * j);
     vec3 pos = c + (r * (1.0 - 2.0 * odd)) * node;
-    float omega = sqrt(0.5 * rs / (r * r * r));
-    float g = sqrt(max(1.0 - 1.5 * rs / r, 0.0)) / (1.0 - omega * lambda);
+    // Keplerian omega = sqrt(rs / (2 r^3)) and 1.5 rs / r, from u = rs / r.
+    float omega = u * sqrt(0.5 * u) * (1.0 / rs);
+    float g = sqrt(max(1.0 - 1.5 * u, 0.0)) / (1.0 - omega * lambda);
 #ifdef GEODESIC_AOV
     hit.outcome = OUT_DISK;
     hit.pos = pos;

@@ -32,7 +32,8 @@ vec2 cos_sin_precise(float x) {
 // Inverse and hyperbolic functions to full f32 precision. Vulkan lets a
 // driver's asin, asinh and sinh be far coarser (asin inherits atan's 4096
 // ulp; asinh and sinh built from log and exp cancel near 0), and lavapipe's
-// are: a 1e-4 error in asin moved disk points by 1e-2 rs.
+// are: a 1e-4 error in asin moved disk points by 1e-2 rs. (sinh: by its
+// series near 0, in light_path.)
 float asin_precise(float x) {
     float ax = abs(x);
     bool big = ax > 0.5;
@@ -50,14 +51,6 @@ float asin_precise(float x) {
     return x < 0.0 ? -r : r;
 }
 
-float sinh_precise(float x) {
-    if (abs(x) < 0.25) {
-        float x2 = x * x;
-        return x * (1.0 + x2 * (1.0 / 6.0 + x2 * (1.0 / 120.0 + x2 * (1.0 / 5040.0))));
-    }
-    return sinh(x);
-}
-
 float asinh_precise(float x) {
     if (abs(x) < 0.25) {
         float x2 = x * x;
@@ -70,22 +63,27 @@ float asinh_precise(float x) {
 // (every integral this file needs has z = 1). Duplication (each turn brings
 // x, y, z four times closer together) until all are within 0.2 of their
 // mean, then Carlson's series to seventh order (DLMF 19.36.1), whose error
-// there is below f32 resolution. Measured in f32 against mpmath over x, y in
-// [0, 1.5] down to 1e-7: relative error at most 2.4e-7, 2.8 turns on
-// average (3.8 with a fifth-order series from 0.05). The loop holds only the
-// duplication: on a CPU driver a loop's body runs for the whole SIMD group
-// each turn, so the series waits until after it.
+// there is below f32 resolution. Measured in f32 against mpmath (x in
+// [0, 1.5] and down to 1e-7, y in [0, 1.5]): relative error at most 3.4e-7,
+// p99 2.3e-7, 1.65 turns on average (the same error as testing before each
+// duplication, whose SIMD groups ran one body more). The loop holds only
+// the duplication: on a CPU driver a loop's body runs for the whole SIMD
+// group each turn, so the series waits until after it.
 vec4 carlson_rf4(vec4 x, vec4 y) {
     vec4 z = vec4(1.0);
     for (int i = 0; i < 16; ++i) {
-        vec4 a = (x + y + z) * (1.0 / 3.0);
-        vec4 dm = max(abs(a - x), max(abs(a - y), abs(a - z))) - 0.2 * a;
-        if (max(max(dm.x, dm.y), max(dm.z, dm.w)) < 0.0) break;
         vec4 sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
         vec4 l = sx * (sy + sz) + sy * sz;
         x = 0.25 * (x + l);
         y = 0.25 * (y + l);
         z = 0.25 * (z + l);
+        // Tested after the duplication: a CPU driver runs a loop's body
+        // until no lane of the SIMD group is left, so a test before it costs
+        // one more body than the longest lane needs; one duplication more
+        // than needed only brings the arguments closer.
+        vec4 a = (x + y + z) * (1.0 / 3.0);
+        vec4 dm = max(abs(a - x), max(abs(a - y), abs(a - z))) - 0.2 * a;
+        if (max(max(dm.x, dm.y), max(dm.z, dm.w)) < 0.0) break;
     }
     vec4 a = (x + y + z) * (1.0 / 3.0);
     vec4 ia = 1.0 / a;
@@ -155,7 +153,9 @@ struct LightPath {
     float u1, d21, d32, u3;  // roots and differences (plunging: d21 = A)
     float mc;                // 1 - k^2
     float kk;                // K(k)
+    float inv_2k;            // 1 / 2K
     float w0, rate;          // elliptic argument at the camera, dw/dphi (signed)
+    float inv_rate;          // 1 / rate (a division is dear on a CPU driver)
     float phi_end;           // angle swept to escape or capture
     bool escapes;
     Agm agm;                 // the means for sn and cn at this k
@@ -199,9 +199,14 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
     float u2 = u1_three + d21;
     float u3 = 1.0 - sum12;
     // One real root: u1 = 1/3 - 2/3 cosh(alpha/3), the pair m +- in with
-    // m - u1 = cosh(alpha/3), n^2 = sinh^2(alpha/3) / 3.
-    float alpha = 2.0 * asinh_precise(sqrt(6.75 * max(-e, 0.0)));
-    float ch = cosh(alpha * (1.0 / 3.0)), sh = sinh_precise(alpha * (1.0 / 3.0));
+    // m - u1 = cosh(alpha/3), n^2 = sinh^2(alpha/3) / 3. One exponential
+    // for both (y = alpha/3): cosh y = (e^y + e^-y)/2, and sinh y the same
+    // way except near 0, where that cancels and its series is exact to f32.
+    float y = (2.0 / 3.0) * asinh_precise(sqrt(6.75 * max(-e, 0.0)));
+    float ey = exp(y), iey = 1.0 / ey, y2 = y * y;
+    float ch = 0.5 * (ey + iey);
+    float sh = y < 0.25 ? y * (1.0 + y2 * (1.0 / 6.0 + y2 * (1.0 / 120.0 + y2 * (1.0 / 5040.0))))
+                        : 0.5 * (ey - iey);
     float n2 = sh * sh * (1.0 / 3.0);
     float A = sqrt(ch * ch + n2);
 
@@ -221,6 +226,7 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
     // K(k) from the arithmetic-geometric mean, which sn needs anyway.
     p.agm = agm_of(p.mc);
     p.kk = 1.5707963267948966 / p.agm.a[AGM_STEPS];
+    p.inv_2k = p.agm.a[AGM_STEPS] * (1.0 / 3.141592653589793);
 
     // Four incomplete integrals F = sqrt(sin2) R_F(cos2, delta2, 1): at the
     // camera, at the end, and at the annulus' two edges (clamped to where
@@ -276,6 +282,7 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
     if (p.kind == PATH_SCATTERED && inward) w_end = 2.0 * p.kk - w_end;
     if (p.kind == PATH_TRAPPED && !inward) w_end = -w_end;
     p.rate = inward ? rate : -rate;
+    p.inv_rate = 1.0 / p.rate;
     p.phi_end = max((w_end - p.w0) / p.rate, 0.0);
     return p;
 }
@@ -284,9 +291,9 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
 // (and before phi_end), or a huge value if there is none.
 float first_crossing_in(LightPath p, vec2 win, float phi0) {
     const float PI_ = 3.14159265358979;
-    float f1 = (win.x - p.w0) / p.rate, f2 = (win.y - p.w0) / p.rate;
-    float lo = max(min(f1, f2), 0.0), hi = min(max(f1, f2), p.phi_end);
-    float phi = phi0 + max(ceil((lo - phi0) / PI_), 0.0) * PI_;
+    vec2 f = (win - p.w0) * p.inv_rate;
+    float lo = max(min(f.x, f.y), 0.0), hi = min(max(f.x, f.y), p.phi_end);
+    float phi = phi0 + max(ceil((lo - phi0) * (1.0 / PI_)), 0.0) * PI_;
     return (hi >= lo && phi <= hi) ? phi : 1e30;
 }
 
@@ -297,7 +304,7 @@ float path_u(LightPath p, float phi) {
     float k2 = 2.0 * p.kk;
     // Scattered and trapped: sn^2 has period 2K and is even, so [0, K].
     // Plunging: w in [0, 2K), and cn(2K - w) = -cn(w).
-    float wr = w - k2 * floor(w / k2);
+    float wr = w - k2 * floor(w * p.inv_2k);
     wr = wr > p.kk ? k2 - wr : wr;
     bool plunging = p.kind == PATH_PLUNGING;
     bool far_half = w > p.kk;
