@@ -445,13 +445,18 @@ Hit trace_planar(vec3 x, vec3 d) {
             vec2 f_in = (w_in - path.w0) / path.rate;
             vec2 inside = path.kind == PATH_TRAPPED ? vec2(0.0, path.phi_end)
                         : vec2(max(min(f_in.x, f_in.y), 0.0), min(max(f_in.x, f_in.y), path.phi_end));
-            for (int j = 0; j < VOLUME_CROSSINGS && phi - PI < inside.y; ++j) {
+            // The test at the end of the body, as in carlson_rf4: a CPU
+            // driver runs the first body for every SIMD group anyway (a slab
+            // past the path's end adds nothing), and a test before the body
+            // would run one body more than the longest lane needs.
+            for (int j = 0; j < VOLUME_CROSSINGS; ++j) {
                 volume_crossing(path, phi, tilt, inside, c, e1, e2, rs, lambda, hit);
                 if (hit.trans < 0.003) {
                     hit.outcome = OUT_CAPTURED;  // opaque: nothing behind shows
                     return hit;
                 }
                 phi += PI;
+                if (phi - PI >= inside.y) break;
             }
         }
     }
