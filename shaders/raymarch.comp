@@ -54,6 +54,9 @@ layout(constant_id = 8) const bool STRAIGHT = false;
 #define DISK_STAGE_TRACE 1  // sky and captures, every pixel; lists disk pixels
 #define DISK_STAGE_DISK 2   // the thin disk over the listed pixels
 layout(constant_id = 9) const int DISK_STAGE = DISK_STAGE_ALL;
+// The observer moves through the static frame (orbiting, falling): the
+// pixel directions are aberrated.
+layout(constant_id = 10) const bool OBSERVER_MOVES = false;
 
 #include "params.glsl"
 #include "geodesic.glsl"
@@ -650,7 +653,7 @@ vec3 pixel_ray(uvec2 px) {
         vec3 beta = P.observer.xyz;
         float b2 = dot(beta, beta);
         float doppler = 1.0;
-        if (b2 > 0.0) {
+        if (OBSERVER_MOVES && b2 > 0.0) {
             float gam = inversesqrt(1.0 - b2);
             float bd = dot(beta, dir);
             dir = normalize((dir / gam - beta + (gam / (gam + 1.0)) * bd * beta) / (1.0 - bd));

@@ -280,6 +280,8 @@ pub struct Variant {
     /// The part of the split thin-disk ray march, `glsl::DISK_STAGE_*`
     /// (constant 9).
     pub disk_stage: u32,
+    /// The observer moves through the static frame: aberration (constant 10).
+    pub observer_moves: bool,
 }
 
 impl Variant {
@@ -301,6 +303,7 @@ impl Variant {
             volume_blackbody: scene.disk.color == VolumeColor::Blackbody,
             straight: !scene.physics.gravity,
             disk_stage: glsl::DISK_STAGE_ALL,
+            observer_moves: scene.observer().beta != glam::DVec3::ZERO,
         }
     }
 
@@ -319,7 +322,7 @@ impl Variant {
 
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against raymarch.comp).
-    pub const CONSTANT_NAMES: [&'static str; 10] = [
+    pub const CONSTANT_NAMES: [&'static str; 11] = [
         "ONE_HOLE",
         "DISK_KIND",
         "SKY_KIND",
@@ -330,9 +333,10 @@ impl Variant {
         "VOLUME_BLACKBODY",
         "STRAIGHT",
         "DISK_STAGE",
+        "OBSERVER_MOVES",
     ];
 
-    pub fn constants(&self) -> [u32; 10] {
+    pub fn constants(&self) -> [u32; 11] {
         [
             u32::from(self.one_hole),
             self.disk,
@@ -344,12 +348,13 @@ impl Variant {
             u32::from(self.volume_blackbody),
             u32::from(self.straight),
             self.disk_stage,
+            u32::from(self.observer_moves),
         ]
     }
 
     pub fn name(&self) -> String {
         format!(
-            "raymarch{} (one hole {}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, straight {}, disk stage {})",
+            "raymarch{} (one hole {}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, straight {}, disk stage {}, observer moves {})",
             if self.aov { " aov" } else { "" },
             self.one_hole,
             self.disk,
@@ -360,7 +365,8 @@ impl Variant {
             self.thin_crossings,
             self.volume_blackbody,
             self.straight,
-            self.disk_stage
+            self.disk_stage,
+            self.observer_moves
         )
     }
 }
