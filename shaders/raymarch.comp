@@ -769,12 +769,14 @@ void main() {
     float tiny = 1e-3 * pixel_angle;
     float lx = length(ax), ly = length(ay);
     bool okx = eh && lx < NEAR && lx > tiny, oky = ev && ly < NEAR && ly > tiny;
-    if (okx && oky) {
-        fp = Footprint(ax, ay, pixel_angle);
-    } else if (okx) {
-        fp = Footprint(ax, pixel_angle * normalize(cross(hit.dir, ax + 1e-12 * t1)), pixel_angle);
-    } else if (oky) {
-        fp = Footprint(pixel_angle * normalize(cross(ay + 1e-12 * t1, hit.dir)), ay, pixel_angle);
+    // With one neighbour's difference only, the other axis is the unlensed
+    // pixel angle at right angles to it (one cross product for either case:
+    // on a CPU driver both branches would run).
+    vec3 known = okx ? ax : ay;
+    vec3 across = (pixel_angle * (okx ? 1.0 : -1.0)) * normalize(cross(hit.dir, known + 1e-12 * t1));
+    if (okx || oky) {
+        fp.x = okx ? ax : across;
+        fp.y = oky ? ay : across;
     }
 #endif
     if (hit.outcome == OUT_ESCAPED) {
