@@ -173,8 +173,10 @@ vec3 sky_catalogue(vec3 dw, Footprint f) {
     float n0 = P.sky.y;
     const float SIGMA = 0.6;                // pixels
     float reach = 3.0 * SIGMA * max(size, 1e-7);
-    float level = clamp(ceil(log2(reach / (0.4 * 2.0 / n0))), 0.0, 7.0);
-    float n = n0 / exp2(level);
+    // (Multiplications by reciprocals here and below: divisions are dear on
+    // a CPU driver.)
+    float level = clamp(ceil(log2(reach * (1.25 * n0))), 0.0, 7.0);
+    float n = n0 * exp2(-level);
     vec2 g = (uv * 0.5 + 0.5) * n;
     vec2 cell = min(floor(g), vec2(n - 1.0));
     vec2 side = sign(g - cell - 0.5);
@@ -190,7 +192,7 @@ vec3 sky_catalogue(vec3 dw, Footprint f) {
     float to_dir = (2.0 / n) * max(ad.x, max(ad.y, ad.z));
     vec3 du = (e_u - d * dot(d, e_u)) * to_dir, dv = (e_v - d * dot(d, e_v)) * to_dir;
     // p = (A^T A)^-1 A^T J (cells), A = [ax ay], J = [du dv].
-    mat2 ata_inv = mat2(m22, -m12, -m12, m11) / det;
+    mat2 ata_inv = mat2(m22, -m12, -m12, m11) * (1.0 / det);
     mat2 atj = mat2(dot(ax, du), dot(ay, du), dot(ax, dv), dot(ay, dv));
     mat2 q = ata_inv * atj;
     vec3 light = vec3(0.0);
