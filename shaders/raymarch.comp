@@ -383,8 +383,8 @@ Hit trace_planar(vec3 x, vec3 d) {
     vec3 c = P.holes[0].xyz;
     float rs = P.holes[0].w;
     vec3 rel = x - c;
-    float r0 = length(rel);
-    vec3 e1 = rel / r0;
+    float r0 = length(rel), ir0 = 1.0 / r0;
+    vec3 e1 = rel * ir0;
     vec3 nrm = cross(e1, d);
     float sn = length(nrm);
     if (sn < 1e-7) {
@@ -393,9 +393,9 @@ Hit trace_planar(vec3 x, vec3 d) {
         hit.pos = x;
         return hit;
     }
-    nrm /= sn;
+    nrm *= 1.0 / sn;
     vec3 e2 = cross(nrm, e1);
-    float u0 = rs / r0;
+    float u0 = rs * ir0;
     float du = -(dot(d, e1) / dot(d, e2)) * u0;
     // The thin disk's annulus in u (anything for other disks).
     float u_lo = rs / max(P.disk.y, 1e-6), u_hi = rs / max(P.disk.x, 1e-6);
@@ -642,8 +642,8 @@ vec3 pixel_ray(uvec2 px) {
     float tan_half = P.cam_pos.w, aspect = P.cam_right.w;
     // Sub-pixel jitter (cam_up.w, cam_fwd.w; 0 = the pixel centre) for
     // accumulated anti-aliasing in the window.
-    float sx = (2.0 * (float(px.x) + 0.5 + P.cam_up.w) / float(w) - 1.0) * tan_half * aspect;
-    float sy = (1.0 - 2.0 * (float(px.y) + 0.5 + P.cam_fwd.w) / float(hgt)) * tan_half;
+    float sx = ((float(px.x) + 0.5 + P.cam_up.w) * (2.0 / float(w)) - 1.0) * tan_half * aspect;
+    float sy = (1.0 - (float(px.y) + 0.5 + P.cam_fwd.w) * (2.0 / float(hgt))) * tan_half;
     vec3 dir = normalize(P.cam_fwd.xyz + sx * P.cam_right.xyz + sy * P.cam_up.xyz);
     // The pixel's direction is measured in the observer's own frame
     // (src/physics/observer.rs): aberration by its velocity into the static

@@ -214,7 +214,7 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
     p.u3 = u3;
     p.d21 = three ? d21 : A;
     p.d32 = d32;
-    p.mc = three ? d32 / d31 : n2 / (2.0 * A * (A + ch));
+    p.mc = (three ? d32 : n2) / (three ? d31 : 2.0 * A * (A + ch));  // one division
     p.kind = three ? (u0 < 2.0 / 3.0 ? PATH_SCATTERED : PATH_TRAPPED) : PATH_PLUNGING;
     float rate = three ? 0.5 * sqrt(d31) : sqrt(A);
     float m = 1.0 - p.mc;
@@ -283,7 +283,7 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
     if (p.kind == PATH_TRAPPED && !inward) w_end = -w_end;
     p.rate = inward ? rate : -rate;
     p.inv_rate = 1.0 / p.rate;
-    p.phi_end = max((w_end - p.w0) / p.rate, 0.0);
+    p.phi_end = max((w_end - p.w0) * p.inv_rate, 0.0);
     return p;
 }
 
