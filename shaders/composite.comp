@@ -46,6 +46,11 @@ layout(constant_id = 2) const bool BLOOM = true;
 layout(constant_id = 3) const bool AUTO_EXPOSURE = false;
 // The saturation is not 1.
 layout(constant_id = 4) const bool SATURATE = false;
+// Each invocation finishes a 2x2 block of pixels, which lies inside one
+// bilinear cell of the quarter-size bloom level (the output and the ray
+// march the same size, a multiple of 4 on each side): four texel fetches
+// of bloom for four pixels, where four filtered taps would read sixteen.
+layout(constant_id = 5) const bool BLOCKS = false;
 
 vec3 aces_narkowicz(vec3 x) {
     const float a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
@@ -103,16 +108,8 @@ uint hash(uvec2 p) {
     return (w >> 22u) ^ w;
 }
 
-void main() {
-    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
-    if (px.x >= int(pc.width) || px.y >= int(pc.height)) return;
-    vec2 uv = (vec2(px) + 0.5) / vec2(pc.width, pc.height);
-    // The ray march may run at a fraction of the output size (the window's
-    // render scale): then it is upscaled here, bilinearly.
-    vec3 c = UPSCALE ? textureLod(hdr, uv, 0.0).rgb : texelFetch(hdr, px, 0).rgb;
-    if (BLOOM) {
-        c += pc.bloom_strength * textureLod(bloom, uv, 0.0).rgb;
-    }
+// Exposure, saturation, tone map, sRGB and dither of pixel px, stored.
+void finish(ivec2 px, vec3 c) {
     c *= AUTO_EXPOSURE ? pc.exposure * metered.exposure : pc.exposure;
     if (SATURATE) {
         float l = luminance(c);
@@ -133,4 +130,42 @@ void main() {
     float n = float((hb & 0xffffu) + (hb >> 16u)) * (1.0 / 65536.0) - 1.0;
     s += n * pc.dither / 255.0;
     imageStore(ldr, px, vec4(clamp(s, 0.0, 1.0), 1.0));
+}
+
+void main() {
+    if (BLOCKS) {
+        ivec2 base = 2 * ivec2(gl_GlobalInvocationID.xy);
+        if (base.x >= int(pc.width) || base.y >= int(pc.height)) return;
+        // Pixel p's bloom coordinate is (p + 0.5) / 4 - 0.5 texels: for the
+        // block at 2X that is cell X/2 - 1 at fractions 0.625, 0.875 (X
+        // even) or cell (X - 1)/2 at 0.125, 0.375 (X odd); clamped at the
+        // edges as the sampler clamps.
+        ivec2 blk = ivec2(gl_GlobalInvocationID.xy);
+        ivec2 odd = blk & 1;
+        ivec2 cell = (blk >> 1) - 1 + odd;
+        vec2 f0 = mix(vec2(0.625), vec2(0.125), vec2(odd));
+        ivec2 last = textureSize(bloom, 0) - 1;
+        ivec2 c0 = clamp(cell, ivec2(0), last), c1 = clamp(cell + 1, ivec2(0), last);
+        vec3 b00 = texelFetch(bloom, c0, 0).rgb, b10 = texelFetch(bloom, ivec2(c1.x, c0.y), 0).rgb;
+        vec3 b01 = texelFetch(bloom, ivec2(c0.x, c1.y), 0).rgb, b11 = texelFetch(bloom, c1, 0).rgb;
+        for (int dy = 0; dy < 2; ++dy) {
+            for (int dx = 0; dx < 2; ++dx) {
+                vec2 f = f0 + 0.25 * vec2(dx, dy);
+                vec3 b = mix(mix(b00, b10, f.x), mix(b01, b11, f.x), f.y);
+                ivec2 px = base + ivec2(dx, dy);
+                finish(px, texelFetch(hdr, px, 0).rgb + pc.bloom_strength * b);
+            }
+        }
+        return;
+    }
+    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    if (px.x >= int(pc.width) || px.y >= int(pc.height)) return;
+    vec2 uv = (vec2(px) + 0.5) / vec2(pc.width, pc.height);
+    // The ray march may run at a fraction of the output size (the window's
+    // render scale): then it is upscaled here, bilinearly.
+    vec3 c = UPSCALE ? textureLod(hdr, uv, 0.0).rgb : texelFetch(hdr, px, 0).rgb;
+    if (BLOOM) {
+        c += pc.bloom_strength * textureLod(bloom, uv, 0.0).rgb;
+    }
+    finish(px, c);
 }

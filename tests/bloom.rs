@@ -74,6 +74,9 @@ fn strength_zero_culls_the_chain_and_a_threshold_nothing_reaches_adds_nothing() 
     r.shutdown().expect("nothing outlives the renderer");
 }
 
+/// At 128 x 128 the composite finishes 2x2 blocks that share four bloom
+/// texels (composite.comp, BLOCKS): a wrong cell or fraction there shifts
+/// the glow and breaks the mirror symmetry checked here.
 #[test]
 fn a_bright_spot_spreads_symmetrically_and_falls_off() {
     const N: u32 = 128;

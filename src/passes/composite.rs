@@ -55,26 +55,31 @@ pub struct Variant {
     pub auto_exposure: bool,
     /// The saturation is not 1 (constant 4).
     pub saturate: bool,
+    /// 2x2 pixels an invocation, sharing four bloom texels: bloom on, the
+    /// output the ray march's size and a multiple of 4 (constant 5).
+    pub blocks: bool,
 }
 
 impl Variant {
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against composite.comp).
-    pub const CONSTANT_NAMES: [&'static str; 5] = [
+    pub const CONSTANT_NAMES: [&'static str; 6] = [
         "UPSCALE",
         "TONEMAP",
         "BLOOM",
         "AUTO_EXPOSURE",
         "SATURATE",
+        "BLOCKS",
     ];
 
-    pub fn constants(&self) -> [u32; 5] {
+    pub fn constants(&self) -> [u32; 6] {
         [
             u32::from(self.upscale),
             self.tonemap,
             u32::from(self.bloom),
             u32::from(self.auto_exposure),
             u32::from(self.saturate),
+            u32::from(self.blocks),
         ]
     }
 }
@@ -107,9 +112,10 @@ pub fn add_composite<'a>(
     } else {
         ("ldr", LDR_FORMAT)
     };
+    let upscale = (hdr.desc.width, hdr.desc.height) != (width, height);
     let variant = Variant {
         linear,
-        upscale: (hdr.desc.width, hdr.desc.height) != (width, height),
+        upscale,
         tonemap: match post.tonemap {
             Tonemap::AcesHill => glsl::TONEMAP_ACES_HILL,
             Tonemap::AcesNarkowicz => glsl::TONEMAP_ACES_NARKOWICZ,
@@ -119,6 +125,16 @@ pub fn add_composite<'a>(
         bloom: bloom.is_some(),
         auto_exposure: exposure.is_some(),
         saturate: post.saturation != 1.0,
+        blocks: !upscale
+            && width % 4 == 0
+            && height % 4 == 0
+            && bloom.is_some_and(|b| (4 * b.desc.width, 4 * b.desc.height) == (width, height)),
+    };
+    // Invocations: one per pixel, or per 2x2 block.
+    let (groups_w, groups_h) = if variant.blocks {
+        (width / 2, height / 2)
+    } else {
+        (width, height)
     };
     let mut ldr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
     let (input, output, blur, metered) =
@@ -170,8 +186,8 @@ pub fn add_composite<'a>(
                     Descriptor::StorageBuffer(metered_buffer),
                 ],
                 bytemuck::bytes_of(&push),
-                width,
-                height,
+                groups_w,
+                groups_h,
             )
         });
     ldr
