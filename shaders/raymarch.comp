@@ -75,7 +75,11 @@ layout(std430, binding = 6) buffer DiskList {
     uint count;
     uint px[];
 } disk_list;
-// Its indirect dispatch: workgroups of 64 listed pixels.
+// Its indirect dispatch: workgroups of 64 listed pixels, in rows of at most
+// DISK_ROW workgroups (a device may allow as few as 65,535 a side, and a 4K
+// frame can list more groups of 64 than that; short rows also make every
+// frame of 720p and up use several, so the tests see them).
+#define DISK_ROW 256u
 layout(std430, binding = 7) buffer DiskDispatch {
     uint groups_x;
     uint groups_y;
@@ -676,7 +680,10 @@ void list_for_disk(uvec2 px, bool need) {
     uint base = 0u;
     if (subgroupElect() && n > 0u) {
         base = atomicAdd(disk_list.count, n);
-        atomicMax(disk_dispatch.groups_x, (base + n + 63u) / 64u);
+        // Both sides grow with the count, so the largest count wins both.
+        uint groups = (base + n + 63u) / 64u;
+        atomicMax(disk_dispatch.groups_x, min(groups, DISK_ROW));
+        atomicMax(disk_dispatch.groups_y, (groups + DISK_ROW - 1u) / DISK_ROW);
     }
     base = subgroupBroadcastFirst(base);
     if (need) disk_list.px[base + subgroupBallotExclusiveBitCount(ballot)] = px.x | (px.y << 16u);
@@ -687,7 +694,7 @@ void list_for_disk(uvec2 px, bool need) {
 // trace pass wrote (the sky, or black where the ray is captured); an opaque
 // disk hides it.
 void disk_pass() {
-    uint i = gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex;
+    uint i = (gl_WorkGroupID.y * DISK_ROW + gl_WorkGroupID.x) * 64u + gl_LocalInvocationIndex;
     if (i >= disk_list.count) return;
     uint packed = disk_list.px[i];
     ivec2 px = ivec2(packed & 0xffffu, packed >> 16u);

@@ -587,17 +587,26 @@ fn the_split_disk_pass_draws_what_the_single_dispatch_draws() {
             "[sky]\nkind = \"black\"\n[disk]\nstructure = 0.0\nopacity = 0.6\n[camera]\nobserver = \"falling\"\n",
         ),
     ];
-    for (name, toml) in scenes {
+    // The larger size lists more pixels than one row of the disk pass's
+    // indirect dispatch holds (256 workgroups of 64).
+    for ((name, toml), (w, h)) in scenes.into_iter().zip([(640u32, 360u32), (160, 90)]) {
         let scene = path_in(&dir, &format!("{name}.toml"));
         std::fs::write(&scene, toml).unwrap();
         let mut images = Vec::new();
         for split in [true, false] {
             let out = path_in(&dir, &format!("{name}-{split}.exr"));
             let mut c = blackhole();
-            c.args(["render", "--width", "160", "--height", "90", "--scene"])
-                .arg(&scene)
-                .arg("--out")
-                .arg(&out);
+            c.args([
+                "render",
+                "--width",
+                &w.to_string(),
+                "--height",
+                &h.to_string(),
+            ])
+            .arg("--scene")
+            .arg(&scene)
+            .arg("--out")
+            .arg(&out);
             if !split {
                 c.env("BLACKHOLE_NO_SPLIT", "1");
             }
@@ -613,9 +622,15 @@ fn the_split_disk_pass_draws_what_the_single_dispatch_draws() {
         let (split, single) = (&images[0], &images[1]);
         let lit = single.pixels().filter(|p| p[0] > 0.0).count();
         assert!(
-            lit > 160 * 90 / 10,
+            lit > (w * h / 10) as usize,
             "{name}: the disk fills the view ({lit} pixels)"
         );
+        if w > 160 {
+            assert!(
+                lit > 2 * 256 * 64,
+                "{name}: more than one row of the dispatch ({lit} pixels)"
+            );
+        }
         for (x, y, s) in single.enumerate_pixels() {
             let t = split.get_pixel(x, y);
             for k in 0..3 {

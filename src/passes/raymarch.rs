@@ -413,7 +413,8 @@ pub fn add_raymarch<'a>(
                     ctx.cmd,
                     dispatch,
                     0,
-                    bytemuck::bytes_of(&[0u32, 1, 1, 0]),
+                    // groups_y grows from 0 with groups_x (rows of DISK_ROW).
+                    bytemuck::bytes_of(&[0u32, 0, 1, 0]),
                 );
             }
             Ok(())
