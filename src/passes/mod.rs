@@ -164,9 +164,13 @@ impl Pipelines {
     }
 
     /// The ray-march pipelines one frame of `variant` runs on this device
-    /// ([`raymarch::Variant::stages`]).
-    pub fn raymarch_stages(&self, variant: raymarch::Variant) -> Vec<raymarch::Variant> {
-        variant.stages(self.gpu.info.disk_split)
+    /// ([`raymarch::Variant::stages`]), split if `split` and the device can.
+    pub fn raymarch_stages(
+        &self,
+        variant: raymarch::Variant,
+        split: bool,
+    ) -> Vec<raymarch::Variant> {
+        variant.stages(split && self.gpu.info.disk_split)
     }
 
     /// The composite specialised for its output, tone map, bloom and

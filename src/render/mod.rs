@@ -207,12 +207,13 @@ impl Renderer {
             self.resources.ensure_volume(scene)?;
         }
         // The ray march specialised for this scene, built now rather than
-        // while a frame records (a new variant takes lavapipe a moment).
-        for variant in self
-            .pipelines
-            .raymarch_stages(raymarch::Variant::of(scene, false))
-        {
-            self.pipelines.raymarch(variant)?;
+        // while a frame records (a new variant takes lavapipe a moment):
+        // split and whole, as a moving camera may need either.
+        let variant = raymarch::Variant::of(scene, false);
+        for split in [true, false] {
+            for stage in self.pipelines.raymarch_stages(variant, split) {
+                self.pipelines.raymarch(stage)?;
+            }
         }
         Ok(())
     }

@@ -80,6 +80,7 @@ pub fn add_frame<'a>(
                 },
                 size,
                 variant: raymarch::Variant::of(scene, output == FrameOutput::Geodesic),
+                split: raymarch::split_pays(scene, size.0, size.1),
             },
         ),
         HdrSource::Image(image) => image.clone(),

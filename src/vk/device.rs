@@ -31,9 +31,10 @@ pub struct DeviceInfo {
     /// Subgroup quad operations in compute shaders (the ray march's ray
     /// differentials need them; without, stars keep the unlensed footprint).
     pub quad_compute: bool,
-    /// Quad and ballot operations in compute shaders: the thin disk's ray
-    /// march is split into a trace pass that lists the disk's pixels and an
-    /// indirect disk pass over them (without, one dispatch does both).
+    /// A CPU device with quad and ballot operations in compute shaders: the
+    /// thin disk's ray march is split into a trace pass that lists the
+    /// disk's pixels and an indirect disk pass over them where the disk
+    /// fills little of the view (otherwise one dispatch does both).
     pub disk_split: bool,
 }
 
@@ -283,9 +284,12 @@ impl Gpu {
                 .supported_operations
                 .contains(vk::SubgroupFeatureFlags::QUAD);
         // The split thin-disk ray march's build also lists pixels with
-        // ballots; BLACKHOLE_NO_SPLIT=1 keeps the one dispatch (for
-        // comparisons).
+        // ballots. It is for CPU drivers, which run every branch for every
+        // pixel; a GPU already skips the disk's code in the SIMD groups
+        // that do not see it. BLACKHOLE_NO_SPLIT=1 keeps the one dispatch
+        // (for comparisons).
         let disk_split = quad_compute
+            && props.device_type == vk::PhysicalDeviceType::CPU
             && std::env::var_os("BLACKHOLE_NO_SPLIT").is_none()
             && subgroup
                 .supported_operations
