@@ -475,25 +475,19 @@ pub fn add_raymarch<'a>(
         dispatch,
         indirect: false,
     };
-    add_stage(
-        graph,
-        pipelines,
-        params,
-        images,
-        &mut hdr,
-        trace,
-        Some(&mut work),
-    );
-    work.indirect = true;
-    add_stage(
-        graph,
-        pipelines,
-        params,
-        images,
-        &mut hdr,
-        disk,
-        Some(&mut work),
-    );
+    // The trace pass appends to the list, the disk pass reads it.
+    for (stage, indirect) in [(trace, false), (disk, true)] {
+        work.indirect = indirect;
+        add_stage(
+            graph,
+            pipelines,
+            params,
+            images,
+            &mut hdr,
+            stage,
+            Some(&mut work),
+        );
+    }
     hdr
 }
 
