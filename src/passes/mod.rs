@@ -163,6 +163,12 @@ impl Pipelines {
         })
     }
 
+    /// Whether this device runs the thin disk's split ray march
+    /// (`DeviceInfo::disk_split`).
+    pub fn can_split(&self) -> bool {
+        self.gpu.info.disk_split
+    }
+
     /// The ray-march pipelines one frame of `variant` runs on this device
     /// ([`raymarch::Variant::stages`]), split if `split` and the device can.
     pub fn raymarch_stages(

@@ -80,7 +80,8 @@ pub fn add_frame<'a>(
                 },
                 size,
                 variant: raymarch::Variant::of(scene, output == FrameOutput::Geodesic),
-                split: raymarch::split_pays(scene, size.0, size.1),
+                // (The estimate only where the device can split at all.)
+                split: pipelines.can_split() && raymarch::split_pays(scene, size.0, size.1),
             },
         ),
         HdrSource::Image(image) => image.clone(),
