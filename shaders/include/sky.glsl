@@ -175,8 +175,15 @@ vec3 sky_catalogue(vec3 dw, Footprint f) {
     float reach = 3.0 * SIGMA * max(size, 1e-7);
     // (Multiplications by reciprocals here and below: divisions are dear on
     // a CPU driver.)
-    float level = clamp(ceil(log2(reach * (1.25 * n0))), 0.0, 7.0);
-    float n = n0 * exp2(-level);
+    // ceil(log2(x)) from x's exponent bits (x = m 2^e, m in [0.5, 1): e,
+    // or e - 1 for a power of two), and 2^-level from bits: a CPU driver
+    // builds log2 and exp2 from polynomials.
+    float x = reach * (1.25 * n0);
+    int e;
+    float mant = frexp(x, e);
+    int li = clamp(mant == 0.5 ? e - 1 : e, 0, 7);
+    float level = float(li);
+    float n = n0 * uintBitsToFloat(uint(127 - li) << 23u);
     vec2 g = (uv * 0.5 + 0.5) * n;
     vec2 cell = min(floor(g), vec2(n - 1.0));
     vec2 side = sign(g - cell - 0.5);
