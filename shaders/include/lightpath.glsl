@@ -51,6 +51,14 @@ float asin_precise(float x) {
     return x < 0.0 ? -r : r;
 }
 
+// sin x for x in [0, pi/3] by its Taylor series to x^13 (error below 2e-9):
+// no range reduction, which a driver's sin does for any argument.
+float sin_third(float x) {
+    float x2 = x * x;
+    return x * (1.0 + x2 * (-1.0 / 6.0 + x2 * (1.0 / 120.0 + x2 * (-1.0 / 5040.0
+         + x2 * (1.0 / 362880.0 + x2 * (-1.0 / 39916800.0 + x2 * (1.0 / 6227020800.0)))))));
+}
+
 float asinh_precise(float x) {
     if (abs(x) < 0.25) {
         float x2 = x * x;
@@ -189,11 +197,11 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
     // pi/3) by the addition formula, and 4/3 sin^2(t/2) = 2/3 (1 - cos t)
     // as 2/3 sin^2 t / (1 + cos t), without the cancellation for small t.
     // (On a CPU driver a sine is a range reduction and a polynomial.)
-    float st = sin(theta * (1.0 / 3.0));
+    float st = sin_third(theta * (1.0 / 3.0));
     float ct = sqrt(max(1.0 - st * st, 0.0));
     float d21 = S * st;
     float d31 = S * (0.5 * st + 0.8660254037844386 * ct);
-    float d32 = S * sin(theta_c * (1.0 / 3.0));
+    float d32 = S * sin_third(theta_c * (1.0 / 3.0));
     float sum12 = (2.0 / 3.0) * st * st / (1.0 + ct);
     float u1_three = 0.5 * (sum12 - d21);
     float u2 = u1_three + d21;
