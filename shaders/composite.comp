@@ -70,20 +70,17 @@ vec3 aces_hill(vec3 color) {
     return clamp(output_mat * (a / b), 0.0, 1.0);
 }
 
-
-// Hill's RRT+ODT rational curve on one value, scaled so it tends to 1.
-float rrt_odt(float v) {
-    float a = v * (v + 0.0245786) - 0.000090537;
-    float b = v * (0.983729 * v + 0.4329510) + 0.238081;
-    return max(0.983729 * a / b, 0.0);
-}
-
 // The tone curve on the brightest channel, the pixel scaled by it: hue and
 // saturation are kept (a blue-white or orange-red blackbody stays so however
-// bright) and no channel clips.
+// bright) and no channel clips. The curve is Hill's RRT+ODT rational fit on
+// one value, scaled so it tends to 1: 0.983729 a(m) / b(m); here divided by
+// m in the same division.
 vec3 hue_preserving(vec3 c) {
     float m = max(max(c.r, c.g), c.b);
-    return m > 1e-12 ? c * (rrt_odt(m) / m) : vec3(0.0);
+    float a = m * (m + 0.0245786) - 0.000090537;
+    float b = m * (0.983729 * m + 0.4329510) + 0.238081;
+    float k = max(0.983729 * a, 0.0) / (b * m);
+    return m > 1e-12 ? c * k : vec3(0.0);
 }
 
 // The sRGB transfer curve for c in [0, 1]. Above the linear toe,

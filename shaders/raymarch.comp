@@ -136,20 +136,26 @@ vec3 disk_color(float r, float g_full) {
 
 #include "volume.glsl"
 
-// The thin disk's structure: its density (mean about 1) at radius r and
-// azimuth az (disk frame) at rotation time t (speed x time). Each element
+// The thin disk's structure: its density (mean about 1) at u = rs / r (where
+// the Keplerian angular velocity is omega) and azimuth az (disk frame) at
+// rotation time t (speed x time). Each element
 // turns with the Keplerian angular velocity of its radius, so the pattern
 // shears (faster inside) and winds into ever finer arcs as time goes on.
 // The tileable noise is read in the co-moving angle (once around the
 // texture per turn) and stretched across log r: long thin arcs. One filtered
 // fetch; the contrast curve squares it into bright filaments and dark lanes.
-float thin_disk_density(float r, float az, float t) {
-    float rs = P.holes[0].w;
-    float phi = az - sqrt(0.5 * rs / (r * r * r)) * t;
-    vec2 uv = vec2(phi * (1.0 / 6.2831853), 1.6 * log(r / rs));
+float thin_disk_density_at(float u, float omega, float az, float t) {
+    float phi = az - omega * t;
+    vec2 uv = vec2(phi * (1.0 / 6.2831853), -1.6 * log(u));
     float n = textureLod(disk_noise, uv, 0.0).r;
     float d = max(1.0 + 2.6 * (n - 0.5), 0.0);
     return mix(1.0, d * d, P.disk_look.x);
+}
+
+// The same from the radius (u = rs / r, omega Keplerian).
+float thin_disk_density(float r, float az, float t) {
+    float rs = P.holes[0].w;
+    return thin_disk_density_at(rs / r, sqrt(0.5 * rs / (r * r * r)), az, t);
 }
 
 // Azimuth of a point in the disk's frame (the AOV's convention).
@@ -358,7 +364,8 @@ bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 no
 #else
     float t = P.vol1.y;
     if (LIGHT_DELAY) t -= P.disk_look.z * light_travel_time(path, phi, b_imp, rs);
-    float dens = THIN_STRUCTURE ? thin_disk_density(r, az0 + odd * PI, t) : 1.0;
+    // (u and omega at hand: no division or square root again.)
+    float dens = THIN_STRUCTURE ? thin_disk_density_at(u, omega, az0 + odd * PI, t) : 1.0;
     float alpha = clamp(P.disk_look.y * dens, 0.0, 1.0);
     hit.glow += hit.trans * alpha * dens * disk_color(r, g * observer_g);
     hit.trans *= 1.0 - alpha;
