@@ -163,8 +163,8 @@ impl Renderer {
         Ok(())
     }
 
-    /// Drops transient images no frame of each slot used lately (after a
-    /// resize). Waits for the frames in flight first.
+    /// Drops transient images and buffers no frame of each slot used lately
+    /// (after a resize). Waits for the frames in flight first.
     pub fn trim(&mut self) -> Result<()> {
         self.wait_idle()?;
         for slot in &mut self.slots {
