@@ -2,7 +2,9 @@
 //! the hazard it covers.
 
 use ash::vk;
-use blackhole::graph::{BufferBinding, Graph, ImageBinding, ImageDesc, ImageHandle, Mips};
+use blackhole::graph::{
+    BufferBinding, BufferHandle, Graph, ImageBinding, ImageDesc, ImageHandle, Mips,
+};
 use blackhole::vk::Access;
 
 use vk::AccessFlags2 as A;
@@ -26,15 +28,21 @@ fn fake_buffer() -> BufferBinding {
     }
 }
 
-/// A final pass that reads `img` (mips) and writes an exported buffer, so the
-/// passes before it stay alive.
-fn consume(g: &mut Graph<'_>, img: &ImageHandle, mips: Mips) {
-    let mut out = g.import_buffer(
+/// A buffer the graph must leave readable by the host: passes that write it
+/// are never culled.
+fn exported(g: &mut Graph<'_>) -> BufferHandle {
+    g.import_buffer(
         "out",
         fake_buffer(),
         Access::Nothing,
         Some(Access::HostRead),
-    );
+    )
+}
+
+/// A final pass that reads `img` (mips) and writes an exported buffer, so the
+/// passes before it stay alive.
+fn consume(g: &mut Graph<'_>, img: &ImageHandle, mips: Mips) {
+    let mut out = exported(g);
     g.add_pass("consume")
         .read(img, Access::ComputeSampledRead, mips)
         .write_buffer(&mut out, Access::ComputeStorageWrite);
@@ -136,12 +144,7 @@ fn second_read_of_a_visible_write_needs_no_barrier() {
     g.add_pass("read1")
         .read(&img, Access::ComputeSampledRead, Mips::ALL)
         .write(&mut other, Access::ComputeStorageWrite, Mips::ALL);
-    let mut out = g.import_buffer(
-        "out",
-        fake_buffer(),
-        Access::Nothing,
-        Some(Access::HostRead),
-    );
+    let mut out = exported(&mut g);
     g.add_pass("read2")
         .read(&img, Access::ComputeSampledRead, Mips::ALL)
         .read(&other, Access::ComputeSampledRead, Mips::ALL)
@@ -426,12 +429,7 @@ fn assert_sources_valid(c: &blackhole::graph::Compiled) {
 fn write_then_compute_then_fragment(first: Access) -> blackhole::graph::Compiled {
     let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 64, 64));
-    let mut out = g.import_buffer(
-        "out",
-        fake_buffer(),
-        Access::Nothing,
-        Some(Access::HostRead),
-    );
+    let mut out = exported(&mut g);
     let mut out2 = g.import_image(
         "target",
         ImageDesc::new_2d(FMT, 64, 64),
@@ -487,12 +485,7 @@ fn colour_attachment_write_then_compute_read_then_fragment_read_chains_without_a
 fn compute_write_of_a_buffer_then_uniform_read_makes_the_write_visible_to_uniform_reads() {
     let mut g = Graph::new(8, 8);
     let mut buf = g.import_buffer("params", fake_buffer(), Access::Nothing, None);
-    let mut out = g.import_buffer(
-        "out",
-        fake_buffer(),
-        Access::Nothing,
-        Some(Access::HostRead),
-    );
+    let mut out = exported(&mut g);
     g.add_pass("write")
         .write_buffer(&mut buf, Access::ComputeStorageWrite);
     g.add_pass("read")
@@ -521,12 +514,7 @@ fn compute_write_of_a_buffer_then_uniform_read_makes_the_write_visible_to_unifor
 fn host_written_parameters_are_made_visible_to_the_uniform_read() {
     let mut g = Graph::new(8, 8);
     let params = g.import_buffer("params", fake_buffer(), Access::HostWrite, None);
-    let mut out = g.import_buffer(
-        "out",
-        fake_buffer(),
-        Access::Nothing,
-        Some(Access::HostRead),
-    );
+    let mut out = exported(&mut g);
     g.add_pass("read")
         .read_buffer(&params, Access::ComputeUniformRead)
         .write_buffer(&mut out, Access::ComputeStorageWrite);
@@ -558,12 +546,7 @@ fn reading_a_transient_before_anything_wrote_it_is_refused() {
 fn read_write_of_an_unwritten_transient_is_refused_too() {
     let mut g = Graph::new(8, 8);
     let mut img = g.create_image("acc", ImageDesc::new_2d(FMT, 8, 8));
-    let mut out = g.import_buffer(
-        "out",
-        fake_buffer(),
-        Access::Nothing,
-        Some(Access::HostRead),
-    );
+    let mut out = exported(&mut g);
     g.add_pass("accumulate")
         .write(&mut img, Access::ComputeStorageReadWrite, Mips::ALL)
         .write_buffer(&mut out, Access::ComputeStorageWrite);
@@ -578,12 +561,7 @@ fn a_cleared_then_appended_transient_buffer_is_visible_to_the_indirect_dispatch_
     let mut g = Graph::new(8, 8);
     let mut args = g.create_buffer("args", 16);
     let mut list = g.create_buffer("list", 256);
-    let mut out = g.import_buffer(
-        "out",
-        fake_buffer(),
-        Access::Nothing,
-        Some(Access::HostRead),
-    );
+    let mut out = exported(&mut g);
     g.add_pass("clear")
         .write_buffer(&mut args, Access::TransferWrite)
         .write_buffer(&mut list, Access::TransferWrite);
@@ -654,12 +632,7 @@ fn a_cleared_then_appended_transient_buffer_is_visible_to_the_indirect_dispatch_
 fn reading_a_transient_buffer_before_anything_wrote_it_is_refused() {
     let mut g = Graph::new(8, 8);
     let args = g.create_buffer("never filled", 16);
-    let mut out = g.import_buffer(
-        "out",
-        fake_buffer(),
-        Access::Nothing,
-        Some(Access::HostRead),
-    );
+    let mut out = exported(&mut g);
     g.add_pass("indirect")
         .read_buffer(&args, Access::IndirectRead)
         .write_buffer(&mut out, Access::ComputeStorageWrite);
@@ -674,12 +647,7 @@ fn reading_a_transient_buffer_before_anything_wrote_it_is_refused() {
 fn indirect_arguments_are_a_buffer_access_only() {
     let mut g = Graph::new(8, 8);
     let img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
-    let mut out = g.import_buffer(
-        "out",
-        fake_buffer(),
-        Access::Nothing,
-        Some(Access::HostRead),
-    );
+    let mut out = exported(&mut g);
     g.add_pass("bad")
         .read(&img, Access::IndirectRead, Mips::ALL)
         .write_buffer(&mut out, Access::ComputeStorageWrite);
@@ -757,12 +725,7 @@ fn no_barrier_of_a_long_mixed_chain_names_an_access_its_stage_cannot_perform() {
                     Access::Nothing,
                     Some(Access::ComputeSampledRead),
                 );
-                let mut out = g.import_buffer(
-                    "out",
-                    fake_buffer(),
-                    Access::Nothing,
-                    Some(Access::HostRead),
-                );
+                let mut out = exported(&mut g);
                 g.add_pass("w").write(&mut img, w, Mips::ALL);
                 for (n, a) in [("1", r1), ("2", r2)] {
                     // Readers also write an exported buffer, so none is culled.

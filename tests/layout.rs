@@ -207,6 +207,21 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
     ] {
         assert_eq!(define(raymarch, name), code, "{name}");
     }
+    // The split ray march's stages (a specialisation constant's values) and
+    // the rows of its indirect dispatch.
+    for (name, rust) in [
+        ("DISK_STAGE_ALL", r::DISK_STAGE_ALL),
+        ("DISK_STAGE_TRACE", r::DISK_STAGE_TRACE),
+        ("DISK_STAGE_DISK", r::DISK_STAGE_DISK),
+    ] {
+        assert_eq!(define(raymarch, name), f64::from(rust), "{name}");
+    }
+    let row = defines(raymarch)
+        .into_iter()
+        .find(|(n, _)| n == "DISK_ROW")
+        .map(|(_, v)| v)
+        .expect("#define DISK_ROW missing");
+    assert_eq!(row, format!("{}u", r::DISK_ROW), "DISK_ROW");
 }
 
 /// `layout(constant_id = N) const TYPE NAME` lines of a GLSL source, as

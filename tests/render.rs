@@ -3,6 +3,7 @@
 
 mod common;
 
+use blackhole::passes::raymarch::glsl::DISK_ROW;
 use common::{SceneSrc, assert_clean, blackhole, path_in, render_png, run, scratch};
 
 fn luma(p: &image::Rgb<u8>) -> f32 {
@@ -588,7 +589,7 @@ fn the_split_disk_pass_draws_what_the_single_dispatch_draws() {
         ),
     ];
     // The larger size lists more pixels than one row of the disk pass's
-    // indirect dispatch holds (256 workgroups of 64).
+    // indirect dispatch holds (DISK_ROW workgroups of 64).
     for ((name, toml), (w, h)) in scenes.into_iter().zip([(640u32, 360u32), (160, 90)]) {
         let scene = path_in(&dir, &format!("{name}.toml"));
         std::fs::write(&scene, toml).unwrap();
@@ -627,7 +628,7 @@ fn the_split_disk_pass_draws_what_the_single_dispatch_draws() {
         );
         if w > 160 {
             assert!(
-                lit > 2 * 256 * 64,
+                lit > 2 * DISK_ROW as usize * 64,
                 "{name}: more than one row of the dispatch ({lit} pixels)"
             );
         }

@@ -1,6 +1,6 @@
-//! Executing a compiled graph: realize transient images, then for each live
-//! pass record a debug label, a timestamp pair, the pass's barriers and the
-//! pass's own commands; then the final barriers.
+//! Executing a compiled graph: realize transient images and buffers, then
+//! for each live pass record a debug label, a timestamp pair, the pass's
+//! barriers and the pass's own commands; then the final barriers.
 
 use std::sync::Arc;
 

@@ -42,6 +42,9 @@ pub mod glsl {
     pub const DISK_STAGE_ALL: u32 = 0;
     pub const DISK_STAGE_TRACE: u32 = 1;
     pub const DISK_STAGE_DISK: u32 = 2;
+    /// Workgroups (of 64 listed pixels) in one row of the disk pass's
+    /// indirect dispatch.
+    pub const DISK_ROW: u32 = 256;
     pub const LUT_MIN_K: f64 = crate::physics::blackbody::LUT_MIN_K;
     pub const LUT_MAX_K: f64 = crate::physics::blackbody::LUT_MAX_K;
 }
@@ -442,19 +445,30 @@ pub fn add_raymarch<'a>(
     let mut hdr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
     let stages = pipelines.raymarch_stages(variant, split);
     let [trace, disk] = stages[..] else {
-        add_stage(graph, pipelines, params, images, &mut hdr, variant, None);
+        add_stage(
+            graph,
+            pipelines,
+            params,
+            images,
+            &mut hdr,
+            variant,
+            Stage::Whole,
+        );
         return hdr;
     };
 
     // The disk pass's work list (a count, then one packed pixel each) and
     // its indirect dispatch, emptied first.
-    let mut list = graph.create_buffer("disk list", 4 + 4 * u64::from(width) * u64::from(height));
-    let mut dispatch = graph.create_buffer("disk dispatch", 16);
-    let (l, d) = (list.clone(), dispatch.clone());
+    let pixels = u64::from(width) * u64::from(height);
+    let mut work = DiskWork {
+        list: graph.create_buffer("disk list", 4 + 4 * pixels),
+        dispatch: graph.create_buffer("disk dispatch", 16),
+    };
+    let (l, d) = (work.list.clone(), work.dispatch.clone());
     graph
         .add_pass("disk list clear")
-        .write_buffer(&mut list, Access::TransferWrite)
-        .write_buffer(&mut dispatch, Access::TransferWrite)
+        .write_buffer(&mut work.list, Access::TransferWrite)
+        .write_buffer(&mut work.dispatch, Access::TransferWrite)
         .record(move |ctx| {
             let (list, dispatch) = (ctx.buffer(&l), ctx.buffer(&d));
             // SAFETY: recording; both ranges lie inside the buffers.
@@ -470,37 +484,45 @@ pub fn add_raymarch<'a>(
             }
             Ok(())
         });
-    let mut work = DiskWork {
-        list,
-        dispatch,
-        indirect: false,
-    };
-    // The trace pass appends to the list, the disk pass reads it.
-    for (stage, indirect) in [(trace, false), (disk, true)] {
-        work.indirect = indirect;
-        add_stage(
-            graph,
-            pipelines,
-            params,
-            images,
-            &mut hdr,
-            stage,
-            Some(&mut work),
-        );
-    }
+    add_stage(
+        graph,
+        pipelines,
+        params,
+        images,
+        &mut hdr,
+        trace,
+        Stage::Trace(&mut work),
+    );
+    add_stage(
+        graph,
+        pipelines,
+        params,
+        images,
+        &mut hdr,
+        disk,
+        Stage::Disk(&work),
+    );
     hdr
 }
 
-/// The split ray march's work list and dispatch; `indirect` for the disk
-/// pass, which reads them, else the trace pass, which appends.
+/// The split ray march's work list and its indirect dispatch.
 struct DiskWork {
     list: BufferHandle,
     dispatch: BufferHandle,
-    indirect: bool,
 }
 
-/// Adds one ray-march dispatch of `variant` writing `hdr` (read too by the
-/// disk pass).
+/// Which ray-march dispatch [`add_stage`] adds.
+enum Stage<'w> {
+    /// The whole ray march, every pixel.
+    Whole,
+    /// The trace pass: every pixel, appending to the work list.
+    Trace(&'w mut DiskWork),
+    /// The disk pass: dispatched indirectly over the list, reading back
+    /// what the trace pass wrote.
+    Disk(&'w DiskWork),
+}
+
+/// Adds one ray-march dispatch of `variant` writing `hdr`.
 fn add_stage<'a>(
     graph: &mut Graph<'a>,
     pipelines: &'a Pipelines,
@@ -508,7 +530,7 @@ fn add_stage<'a>(
     images: &SceneImages,
     hdr: &mut ImageHandle,
     variant: Variant,
-    work: Option<&mut DiskWork>,
+    stage: Stage<'_>,
 ) {
     let SceneImages {
         disk_lut,
@@ -519,7 +541,7 @@ fn add_stage<'a>(
     let (width, height) = (hdr.desc.width, hdr.desc.height);
     let (out, lut, sky_tex, ubo) = (hdr.clone(), disk_lut.clone(), sky.clone(), params.clone());
     let (noise, volume) = (disk_noise.clone(), volume_noise.clone());
-    let indirect = work.as_ref().is_some_and(|w| w.indirect);
+    let indirect = matches!(stage, Stage::Disk(_));
     let mut pass = graph
         .add_pass(if indirect {
             "raymarch disk"
@@ -533,27 +555,28 @@ fn add_stage<'a>(
     if sky != disk_lut {
         pass = pass.read(sky, Access::ComputeSampledRead, Mips::ALL);
     }
-    let buffers = match work {
-        Some(w) if w.indirect => {
-            pass = pass
-                .read_buffer(&w.list, Access::ComputeStorageRead)
-                .read_buffer(&w.dispatch, Access::IndirectRead);
-            Some((w.list.clone(), w.dispatch.clone()))
-        }
-        Some(w) => {
+    let (buffers, hdr_access) = match stage {
+        Stage::Whole => (None, Access::ComputeStorageWrite),
+        Stage::Trace(w) => {
             pass = pass
                 .write_buffer(&mut w.list, Access::ComputeStorageReadWrite)
                 .write_buffer(&mut w.dispatch, Access::ComputeStorageReadWrite);
-            Some((w.list.clone(), w.dispatch.clone()))
+            (
+                Some((w.list.clone(), w.dispatch.clone())),
+                Access::ComputeStorageWrite,
+            )
         }
-        None => None,
+        Stage::Disk(w) => {
+            pass = pass
+                .read_buffer(&w.list, Access::ComputeStorageRead)
+                .read_buffer(&w.dispatch, Access::IndirectRead);
+            (
+                Some((w.list.clone(), w.dispatch.clone())),
+                Access::ComputeStorageReadWrite,
+            )
+        }
     };
-    let access = if indirect {
-        Access::ComputeStorageReadWrite
-    } else {
-        Access::ComputeStorageWrite
-    };
-    pass.write(hdr, access, Mips::ALL).record(move |ctx| {
+    pass.write(hdr, hdr_access, Mips::ALL).record(move |ctx| {
         // Built on first use (Renderer::prepare_scene builds it ahead).
         let pipeline = pipelines.raymarch(variant)?;
         let repeat = pipelines.repeat_sampler.sampler;

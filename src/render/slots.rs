@@ -1,7 +1,7 @@
 //! Frame slots: everything one frame in flight needs of its own, so the CPU
 //! can record frame N + 1 while the GPU still runs frame N. A slot is reused
-//! only after its fence has signalled, and only then are its transient images,
-//! parameter buffer, timestamps and readback touched again.
+//! only after its fence has signalled, and only then are its transient images
+//! and buffers, parameter buffer, timestamps and readback touched again.
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -23,8 +23,9 @@ const MAX_TIMED_PASSES: u32 = 64;
 
 /// One frame in flight's own resources.
 pub struct FrameSlot {
-    /// Graph-owned images of this slot's frames; never shared with the other
-    /// slot, so one slot cannot overwrite what the other's frame still reads.
+    /// Graph-owned images and buffers of this slot's frames; never shared
+    /// with the other slot, so one slot cannot overwrite what the other's
+    /// frame still reads.
     pub transients: TransientPool,
     /// The host-written ray-march parameters of this slot's frame.
     pub params: Buffer,
