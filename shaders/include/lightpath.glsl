@@ -249,6 +249,7 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
     if (p.kind == PATH_TRAPPED) uu.zw = max(uu.zw, u3);
     vec4 a1 = uu - p.u1;
     vec4 sin2, cos2, delta2;
+    bvec4 at_k = bvec4(false);
     if (p.kind == PATH_SCATTERED) {
         vec4 a3 = u3 - uu;
         float u2m0 = (a1.x > 0.0 && a3.x > 0.0) ? g0 / (a1.x * a3.x) : u2 - u0;
@@ -258,6 +259,13 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
         sin2 = a1 * i21;
         cos2 = u2m * i21;
         delta2 = a3 * (1.0 / d31);
+        // An annulus edge the path never reaches is clamped to the
+        // periapsis, where F is K (from the means above): R_F(0, y, 1) there
+        // would keep the SIMD group longest in the duplication loop, and most
+        // sky rays pass outside the disk. R_F(1, 1, 1) = 1 takes one turn.
+        at_k = lessThanEqual(u2m, vec4(0.0));
+        cos2 = mix(cos2, vec4(1.0), at_k);
+        delta2 = mix(delta2, vec4(1.0), at_k);
     } else if (p.kind == PATH_TRAPPED) {
         float a2 = u0 - u2;
         float um30 = max((a1.x > 0.0 && a2 > 0.0) ? g0 / (a1.x * a2) : u0 - u3, 0.0);
@@ -274,6 +282,7 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
         delta2 = 1.0 - m * sin2;
     }
     vec4 w = sqrt(max(sin2, 0.0)) * carlson_rf4(max(cos2, 0.0), max(delta2, 0.0));
+    w = mix(w, vec4(p.kk), at_k);
     // Plunging: past phi = pi/2 (v > A), F = 2K - F(pi - phi).
     if (p.kind == PATH_PLUNGING) {
         w = mix(w, 2.0 * p.kk - w, greaterThan(a1, vec4(A)));
