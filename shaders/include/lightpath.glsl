@@ -14,14 +14,29 @@
 #ifndef LIGHTPATH_GLSL
 #define LIGHTPATH_GLSL
 
+// The polynomials below are evaluated by Estrin's scheme: pairs of terms
+// combined by t^2, t^4, t^8, a tree a few products deep instead of Horner's
+// chain of one multiply-add per term. A CPU driver runs a SIMD group's lanes
+// in lock step, each step waiting on the last, so the chain's length, not
+// its count of operations, is what a polynomial costs there.
+// c[0] + c[1] t + ... + c[11] t^11.
+float poly12(float t, const float c[12]) {
+    float t2 = t * t, t4 = t2 * t2, t8 = t4 * t4;
+    float p01 = c[0] + c[1] * t, p23 = c[2] + c[3] * t, p45 = c[4] + c[5] * t;
+    float p67 = c[6] + c[7] * t, p89 = c[8] + c[9] * t, pab = c[10] + c[11] * t;
+    return (p01 + p23 * t2) + t4 * (p45 + p67 * t2) + t8 * (p89 + pab * t2);
+}
+
 // cos and sin of x to full f32 precision: the angle reduced by pi/2 with
 // a two-part constant, then Taylor polynomials on [-pi/4, pi/4].
 vec2 cos_sin_precise(float x) {
     float q = round(x * 0.6366197723675814);
     float r = (x - q * 1.5707963705062866) + q * 4.371139000186243e-8;
-    float r2 = r * r;
-    float s = r * (1.0 + r2 * (-1.0 / 6.0 + r2 * (1.0 / 120.0 + r2 * (-1.0 / 5040.0 + r2 * (1.0 / 362880.0)))));
-    float c = 1.0 + r2 * (-0.5 + r2 * (1.0 / 24.0 + r2 * (-1.0 / 720.0 + r2 * (1.0 / 40320.0 + r2 * (-1.0 / 3628800.0)))));
+    float r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
+    // (Estrin's scheme, see poly12.)
+    float s = r * ((1.0 - r2 * (1.0 / 6.0)) + r4 * ((1.0 / 120.0 - r2 * (1.0 / 5040.0)) + r4 * (1.0 / 362880.0)));
+    float c = (1.0 - 0.5 * r2) + r4 * (1.0 / 24.0 - r2 * (1.0 / 720.0))
+            + r8 * (1.0 / 40320.0 - r2 * (1.0 / 3628800.0));
     int k = int(q) & 3;
     if (k == 0) return vec2(c, s);
     if (k == 1) return vec2(-s, c);
@@ -41,12 +56,10 @@ float asin_precise(float x) {
     float y = big ? sqrt(0.5 * (1.0 - ax)) : ax;
     float y2 = y * y;
     // Maclaurin series of asin to y^23: below 1e-9 relative for |y| <= 0.5.
-    float p = 0.0;
     const float C[12] = float[12](1.0, 1.0 / 6.0, 3.0 / 40.0, 5.0 / 112.0, 35.0 / 1152.0,
         63.0 / 2816.0, 231.0 / 13312.0, 143.0 / 10240.0, 6435.0 / 557056.0,
         12155.0 / 1245184.0, 46189.0 / 5505024.0, 88179.0 / 12058624.0);
-    for (int i = 11; i >= 0; --i) p = p * y2 + C[i];
-    float r = y * p;
+    float r = y * poly12(y2, C);
     if (big) r = 1.5707963267948966 - 2.0 * r;
     return x < 0.0 ? -r : r;
 }
@@ -54,9 +67,9 @@ float asin_precise(float x) {
 // sin x for x in [0, pi/3] by its Taylor series to x^13 (error below 2e-9):
 // no range reduction, which a driver's sin does for any argument.
 float sin_third(float x) {
-    float x2 = x * x;
-    return x * (1.0 + x2 * (-1.0 / 6.0 + x2 * (1.0 / 120.0 + x2 * (-1.0 / 5040.0
-         + x2 * (1.0 / 362880.0 + x2 * (-1.0 / 39916800.0 + x2 * (1.0 / 6227020800.0)))))));
+    float x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
+    return x * ((1.0 - x2 * (1.0 / 6.0)) + x4 * (1.0 / 120.0 - x2 * (1.0 / 5040.0))
+              + x8 * ((1.0 / 362880.0 - x2 * (1.0 / 39916800.0)) + x4 * (1.0 / 6227020800.0)));
 }
 
 float asinh_precise(float x) {
@@ -152,6 +165,21 @@ vec2 jacobi_sn_cn(float w, Agm g) {
     return cs0.y < 1e-18 ? vec2(cs0.y, 1.0) : vec2(sn, c * sn);
 }
 
+// K(k) from mc = 1 - k^2 by Hastings' fit (Abramowitz and Stegun 17.3.34,
+// error below 2e-8 for mc in (0, 1]): a logarithm and two short
+// polynomials instead of the arithmetic-geometric mean's chain of seven
+// square roots, each waiting on the last. So a pass that needs only K (the
+// trace pass: the windows, the end point) never computes the means; one
+// that evaluates sn computes them as well.
+float complete_k(float mc) {
+    float m2 = mc * mc;
+    float a = (1.38629436112 + 0.09666344259 * mc) + m2 * ((0.03590092383 + 0.03742563713 * mc)
+            + m2 * 0.01451196212);
+    float b = (0.5 + 0.12498593597 * mc) + m2 * ((0.06880248576 + 0.03328355346 * mc)
+            + m2 * 0.00441787012);
+    return a - b * log(max(mc, 1e-30));
+}
+
 #define PATH_SCATTERED 0
 #define PATH_TRAPPED 1
 #define PATH_PLUNGING 2
@@ -231,10 +259,10 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
     p.escapes = p.kind == PATH_SCATTERED || (p.kind == PATH_PLUNGING && !inward);
     float u_end = p.escapes ? 0.0 : 1.0;
 
-    // K(k) from the arithmetic-geometric mean, which sn needs anyway.
+    // The means for sn (computed only where a pass evaluates sn), and K.
     p.agm = agm_of(p.mc);
-    p.kk = 1.5707963267948966 / p.agm.a[AGM_STEPS];
-    p.inv_2k = p.agm.a[AGM_STEPS] * (1.0 / 3.141592653589793);
+    p.kk = complete_k(p.mc);
+    p.inv_2k = 0.5 / p.kk;
 
     // Four incomplete integrals F = sqrt(sin2) R_F(cos2, delta2, 1): at the
     // camera, at the end, and at the annulus' two edges (clamped to where
