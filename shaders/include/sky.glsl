@@ -180,7 +180,7 @@ vec3 star_cell(ivec2 ip, vec2 o, int level, mat2 q) {
 // toward the galactic centre.
 vec3 sky_catalogue(vec3 dw, Footprint f) {
     mat3 m = transpose(mat3(P.sky_m0.xyz, P.sky_m1.xyz, P.sky_m2.xyz));
-    vec3 d = normalize(m * dw);
+    vec3 d = m * dw;   // (a unit vector turned)
     vec3 ax = m * f.x, ay = m * f.y;
     float m11 = dot(ax, ax), m12 = dot(ax, ay), m22 = dot(ay, ay);
     // The solid angle of a pixel, at least 1/MAX_GAIN of the unlensed one:
@@ -190,21 +190,23 @@ vec3 sky_catalogue(vec3 dw, Footprint f) {
     float min_area = f.pixel * f.pixel / MAX_GAIN;
     float det = max(m11 * m22 - m12 * m12, min_area * min_area);
     float area = sqrt(det);
-    float size = footprint_size(Footprint(ax, ay, f.pixel));
+    // footprint_size squared: its outer square root is folded into the level.
+    float size2 = 0.5 * (m11 + m22) + sqrt(0.25 * (m11 - m22) * (m11 - m22) + m12 * m12);
     uint face;
     vec2 uv;
     vec3 ad = cube_face(d, face, uv);
     float n0 = P.sky.y;
-    float reach = 3.0 * STAR_SIGMA * max(size, 1e-7);
-    // (Multiplications by reciprocals here and below: divisions are dear on
-    // a CPU driver.)
-    // ceil(log2(x)) from x's exponent bits (x = m 2^e, m in [0.5, 1): e,
-    // or e - 1 for a power of two), and 2^-level from bits: a CPU driver
-    // builds log2 and exp2 from polynomials.
-    float x = reach * (1.25 * n0);
+    // The reach is 3 STAR_SIGMA size; the level, ceil(log2(x)) for x =
+    // 1.25 n0 reach. (Multiplications by reciprocals here and below:
+    // divisions are dear on a CPU driver.)
+    // ceil(log2(x)) from the exponent bits of x^2 = m 2^e (m in [0.5, 1)):
+    // log2(x) lies in [(e - 1) / 2, e / 2), so its ceiling is (e + 1) >> 1
+    // (one level coarser at an exact power of two, which is as safe), and
+    // 2^-level from bits: a CPU driver builds sqrt, log2 and exp2 at a cost.
+    float x_scale = 3.0 * STAR_SIGMA * 1.25 * n0;
     int e;
-    float mant = frexp(x, e);
-    int li = clamp(mant == 0.5 ? e - 1 : e, 0, 7);
+    frexp(max(size2, 1e-14) * (x_scale * x_scale), e);
+    int li = clamp((e + 1) >> 1, 0, 7);
     float n = n0 * uintBitsToFloat(uint(127 - li) << 23u);
     vec2 g = (uv * 0.5 + 0.5) * n;
     vec2 cell = min(floor(g), vec2(n - 1.0));
