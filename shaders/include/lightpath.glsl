@@ -121,7 +121,7 @@ vec4 carlson_rf4(vec4 x, vec4 y) {
     vec4 series = 1.0 - e2 * 0.1 + e3 * (1.0 / 14.0) + e2 * e2 * (1.0 / 24.0)
                 - e2 * e3 * (3.0 / 44.0) - e2 * e2 * e2 * (5.0 / 208.0)
                 + e3 * e3 * (3.0 / 104.0) + e2 * e2 * e3 * (1.0 / 16.0);
-    return series * inversesqrt(a);
+    return series * sqrt(ia);  // 1 / sqrt(a) from 1 / a: no second division
 }
 
 // Jacobi sn and cn (parameter m = 1 - mc) by the arithmetic-geometric mean
