@@ -712,6 +712,7 @@ void disk_pass() {
 #endif
 
 void main() {
+    read_params();  // first, outside any branch (params.glsl)
 #ifdef DISK_SPLIT
     if (DISK_STAGE == DISK_STAGE_DISK) {
         disk_pass();

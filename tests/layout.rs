@@ -34,9 +34,12 @@ fn member_offsets(spirv: &[u8], name: &str) -> Vec<u32> {
         }
         i += count.max(1);
     }
+    // A struct used both in a block and as a private variable is two types
+    // of one name; the block's is the one with offsets.
     let id = *ids
-        .first()
-        .unwrap_or_else(|| panic!("no struct named {name}"));
+        .iter()
+        .find(|id| offsets.iter().any(|o| o.0 == **id))
+        .unwrap_or_else(|| panic!("no struct named {name} with member offsets"));
     let mut m: Vec<(u32, u32)> = offsets
         .iter()
         .filter(|o| o.0 == id)

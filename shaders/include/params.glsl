@@ -30,7 +30,7 @@
 #define LUT_MIN_K 500.0
 #define LUT_MAX_K 100000.0
 
-layout(std430, binding = 1) readonly buffer RaymarchParams {
+struct RaymarchParams {
     vec4 cam_pos;      // xyz: camera position; w: tan(vfov / 2)
     vec4 cam_right;    // xyz: right;           w: aspect (W / H)
     vec4 cam_up;       // xyz: camera up;       w: sub-pixel jitter x (pixels, 0 = centre)
@@ -55,6 +55,22 @@ layout(std430, binding = 1) readonly buffer RaymarchParams {
     vec4 sky_m2;
     uvec4 counts;      // x: hole count, y: width, z: height, w: step budget
     vec4 holes[MAX_HOLES]; // xyz: position, w: rs
-} P;
+};
+
+layout(std430, binding = 1) readonly buffer RaymarchParamsBlock {
+    RaymarchParams params;
+} params_block;
+
+// The parameters as the shader reads them: a private copy taken by
+// read_params() at the top of main, before any branch. Lavapipe reads a
+// buffer at a uniform address once for the SIMD group only where no lane can
+// be masked off; inside a branch, a loop or after a return it reads it lane by
+// lane in a loop of its own (measured: a tenth of the trace pass's time and
+// a sixth of the disk pass's). Only the fields a pipeline uses are read.
+RaymarchParams P;
+
+void read_params() {
+    P = params_block.params;
+}
 
 #endif
