@@ -295,7 +295,7 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
         cos2 = u2m * i21;
         delta2 = a3 * (1.0 / d31);
         // An annulus edge the path never reaches is clamped to the
-        // periapsis, where F is K (from the means above): R_F(0, y, 1) there
+        // periapsis, where F is K (p.kk, above): R_F(0, y, 1) there
         // would keep the SIMD group longest in the duplication loop, and most
         // sky rays pass outside the disk. R_F(1, 1, 1) = 1 takes one turn.
         at_k = lessThanEqual(u2m, vec4(0.0));

@@ -133,13 +133,23 @@ vec3 sky_stars(vec3 d, float pixel_angle) {
     return (sum + galaxy) * P.sky.z;
 }
 
+// exp(-16 x), near enough for a soft profile: (1 - x)^16, zero past x = 1.
+// Four squarings where an exponential is a range reduction and a polynomial
+// on a CPU driver. As a Gaussian exp(-r^2 / (2 sigma^2)) with x = r^2 / (2
+// sigma^2 (16 + 1)): within 1.4 % of the peak everywhere, the same total (2
+// pi sigma^2), and 66 % of its height at 3 sigma.
+float soft_profile(float x) {
+    float k = max(1.0 - x, 0.0);
+    k *= k;
+    k *= k;
+    k *= k;
+    return k * k;
+}
+
 // The light one cell of the catalogue's star grid sheds on d: its texel
 // `ip` at level `level`, whose corner is `o` cells from d's place g, mapped
-// to pixels by q (see sky_catalogue). Each star is drawn with the kernel
-// (1 - r^2 / (2 sigma^2 (M + 1)))^M, M = 16: the Gaussian of sigma to 1.4 %
-// of its peak, with the same total (2 pi sigma^2) and 66 % of its light at 3
-// sigma (the faint wings the tone curve lifts), in four squarings where an
-// exponential is a range reduction and a polynomial on a CPU driver.
+// to pixels by q (see sky_catalogue). Each star is a Gaussian of sigma
+// STAR_SIGMA pixels drawn with soft_profile.
 const float STAR_SIGMA = 0.6;   // pixels
 vec3 star_cell(ivec2 ip, vec2 o, int level, mat2 q) {
     // x: the light's place in the cell (integer part u in 4095ths,
@@ -149,12 +159,7 @@ vec3 star_cell(ivec2 ip, vec2 o, int level, mat2 q) {
     vec2 place = vec2(pu * (1.0 / STAR_PLACE_STEPS),
                       (t.x - pu) * ((STAR_PLACE_STEPS + 1.0) / STAR_PLACE_STEPS));
     vec2 p = q * (o + place);
-    float k = max(1.0 - (1.0 / (34.0 * STAR_SIGMA * STAR_SIGMA)) * dot(p, p), 0.0);
-    k *= k;
-    k *= k;
-    k *= k;
-    k *= k;
-    return k * t.yzw;
+    return soft_profile((1.0 / (34.0 * STAR_SIGMA * STAR_SIGMA)) * dot(p, p)) * t.yzw;
 }
 
 // The real sky (src/stars.rs): the Hipparcos stars binned on the faces of a
@@ -227,7 +232,8 @@ vec3 sky_catalogue(vec3 dw, Footprint f) {
     mat2 atj = mat2(dot(ax, du), dot(ay, du), dot(ax, dv), dot(ay, dv));
     mat2 q = ata_inv * atj;
     // The 2x2 cells as four calls, not a loop with a skip: a CPU driver
-    // runs every lane through both anyway, and the loop's masks cost more.
+    // runs every lane through every cell anyway, and the loop's masks cost
+    // more.
     // A cell clamped at a face's edge is the same cell twice: counted once.
     vec2 c1 = clamp(cell + side, vec2(0.0), vec2(n - 1.0));
     vec2 once = vec2(notEqual(c1, cell));
@@ -242,13 +248,8 @@ vec3 sky_catalogue(vec3 dw, Footprint f) {
     float cos_l = d.x * inversesqrt(max(dot(d.xy, d.xy), 1e-12));
     float toward_centre = 0.5 + 0.5 * cos_l;
     float width = 0.07 + 0.08 * toward_centre * toward_centre;
-    // exp(-z^2 / (2 width^2)) as (1 - x/16)^16: the same profile to 1.4 % of
-    // its peak, in four squarings (an exponential is dear on a CPU driver).
-    float fall = max(1.0 - (1.0 / 32.0) * d.z * d.z / (width * width), 0.0);
-    fall *= fall;
-    fall *= fall;
-    fall *= fall;
-    fall *= fall;
+    // exp(-z^2 / (2 width^2)) by soft_profile.
+    float fall = soft_profile((1.0 / 32.0) * d.z * d.z / (width * width));
     float band = fall * (0.35 + 0.65 * toward_centre * toward_centre);
     vec3 galaxy = vec3(0.9, 0.85, 0.75) * (P.sky.w * band);
     return (stars + galaxy) * P.sky.z;
