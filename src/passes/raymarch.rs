@@ -443,17 +443,13 @@ pub fn add_raymarch<'a>(
         RaymarchOutput::Geodesic => ("geodesic aov", AOV_FORMAT),
     };
     let mut hdr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
+    // The dispatches share everything but the image, variant and stage.
+    let stage = |graph: &mut Graph<'a>, hdr: &mut ImageHandle, variant, stage: Stage<'_>| {
+        add_stage(graph, pipelines, params, images, hdr, variant, stage);
+    };
     let stages = pipelines.raymarch_stages(variant, split);
     let [trace, disk] = stages[..] else {
-        add_stage(
-            graph,
-            pipelines,
-            params,
-            images,
-            &mut hdr,
-            variant,
-            Stage::Whole,
-        );
+        stage(graph, &mut hdr, variant, Stage::Whole);
         return hdr;
     };
 
@@ -484,24 +480,8 @@ pub fn add_raymarch<'a>(
             }
             Ok(())
         });
-    add_stage(
-        graph,
-        pipelines,
-        params,
-        images,
-        &mut hdr,
-        trace,
-        Stage::Trace(&mut work),
-    );
-    add_stage(
-        graph,
-        pipelines,
-        params,
-        images,
-        &mut hdr,
-        disk,
-        Stage::Disk(&work),
-    );
+    stage(graph, &mut hdr, trace, Stage::Trace(&mut work));
+    stage(graph, &mut hdr, disk, Stage::Disk(&work));
     hdr
 }
 
