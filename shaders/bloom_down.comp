@@ -4,6 +4,8 @@
 // boxes (centre box 0.5, corner boxes 0.125 each), which removes the aliasing
 // of a plain 2x2 box. The first level comes from bloom_prefilter.comp.
 
+#include "color.glsl"
+
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D src;
@@ -39,5 +41,5 @@ void main() {
     vec3 b3 = box(f, g, k, l);       // bottom left
     vec3 b4 = box(g, h, l, m);       // bottom right
     vec3 color = 0.5 * b0 + 0.125 * (b1 + b2 + b3 + b4);
-    imageStore(dst, ivec2(p), vec4(color, 1.0));
+    imageStore(dst, ivec2(p), vec4(storable(color), 1.0));
 }

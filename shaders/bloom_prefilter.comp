@@ -9,6 +9,8 @@
 // smoothly, so no Karis average is needed against flicker (it would also dim
 // thin bright lines such as the photon ring).
 
+#include "color.glsl"
+
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D src;
@@ -41,5 +43,5 @@ void main() {
     float rq = clamp(br - pc.threshold + pc.knee, 0.0, 2.0 * pc.knee);
     rq = rq * rq / (4.0 * pc.knee + 1e-5);
     color *= max(rq, br - pc.threshold) / max(br, 1e-5);
-    imageStore(dst, ivec2(p), vec4(color, 1.0));
+    imageStore(dst, ivec2(p), vec4(storable(color), 1.0));
 }

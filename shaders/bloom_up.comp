@@ -6,6 +6,8 @@
 // same spread (variance) as the nine-tap [1 2 1] tent at +-radius, for four
 // filtered taps instead of nine (they are dear on a CPU driver).
 
+#include "color.glsl"
+
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = 0) uniform sampler2D src;             // level n + 1
@@ -25,5 +27,5 @@ void main() {
     vec3 s = textureLod(src, uv + o, 0.0).rgb + textureLod(src, uv - o, 0.0).rgb
            + textureLod(src, uv + vec2(o.x, -o.y), 0.0).rgb + textureLod(src, uv + vec2(-o.x, o.y), 0.0).rgb;
     vec3 c = imageLoad(dst, ivec2(p)).rgb + 0.25 * s;
-    imageStore(dst, ivec2(p), vec4(c, 1.0));
+    imageStore(dst, ivec2(p), vec4(storable(c), 1.0));
 }

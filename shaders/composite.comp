@@ -113,7 +113,7 @@ void finish(ivec2 px, vec3 c) {
         c = max(l + pc.saturation * (c - l), 0.0);
     }
 #ifdef HDR_OUTPUT
-    imageStore(ldr, px, vec4(c, 1.0));
+    imageStore(ldr, px, vec4(storable(c), 1.0));
     return;
 #endif
     vec3 t = TONEMAP == TONEMAP_HUE_PRESERVING ? hue_preserving(c)

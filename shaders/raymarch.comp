@@ -58,6 +58,7 @@ layout(constant_id = 9) const int DISK_STAGE = DISK_STAGE_ALL;
 // pixel directions are aberrated.
 layout(constant_id = 10) const bool OBSERVER_MOVES = false;
 
+#include "color.glsl"
 #include "params.glsl"
 #include "geodesic.glsl"
 #include "lightpath.glsl"
@@ -707,7 +708,7 @@ void disk_pass() {
     ivec2 px = ivec2(packed & 0xffffu, packed >> 16u);
     Hit hit = trace_planar(P.cam_pos.xyz, pixel_ray(uvec2(px)));
     vec3 behind = hit.trans < 0.003 ? vec3(0.0) : imageLoad(out_img, px).rgb;
-    imageStore(out_img, px, vec4(hit.glow + hit.trans * behind, 1.0));
+    imageStore(out_img, px, vec4(storable(hit.glow + hit.trans * behind), 1.0));
 }
 #endif
 
@@ -812,6 +813,6 @@ void main() {
 #ifdef RAY_DIFFERENTIALS
     if (!inside) return;
 #endif
-    imageStore(out_img, ivec2(px), vec4(color, 1.0));
+    imageStore(out_img, ivec2(px), vec4(storable(color), 1.0));
 #endif
 }

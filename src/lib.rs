@@ -2,8 +2,8 @@
 //!
 //! Layers, from the bottom: [`vk`] wraps Vulkan (one concept per file),
 //! [`graph`] schedules passes and derives every barrier, [`passes`] adds
-//! effects to a graph, [`renderer`] runs frames, [`output`] writes files.
-//! [`scene`] is the TOML scene schema; [`physics`] is the f64 CPU reference.
+//! effects to a graph, [`render`] runs frames, [`output`] writes files.
+//! [`scene`] is the TOML scene schema; [`physics`] is the f64 CPU reference; [`settings`] reads the environment.
 
 #![warn(
     clippy::all,
@@ -18,11 +18,13 @@ pub mod cli;
 pub mod error;
 pub mod frame;
 pub mod graph;
+pub mod input;
 pub mod output;
 pub mod passes;
 pub mod physics;
 pub mod render;
 pub mod scene;
+pub mod settings;
 pub mod shaders;
 pub mod sky;
 pub mod stars;

@@ -73,41 +73,99 @@ pub fn load_linear(path: &Path) -> Result<(u32, u32, Vec<[f32; 4]>)> {
     );
     let rgba = img.into_rgba32f();
     let (w, h) = rgba.dimensions();
+    let mut fixed = Sanitised::default();
     let texels = rgba
         .pixels()
         .map(|p| {
             let [r, g, b, a] = p.0;
             if is_float {
-                [r.max(0.0), g.max(0.0), b.max(0.0), a]
+                fixed.texel([r, g, b, a])
             } else {
                 [srgb_to_linear(r), srgb_to_linear(g), srgb_to_linear(b), a]
             }
         })
         .collect();
+    fixed.report(path);
     Ok((w, h, texels))
+}
+
+/// The largest value the sky texture holds: the largest finite half float.
+/// A brighter texel would become infinite on the GPU, and filtering would
+/// turn it into NaN that bloom and exposure spread over the whole frame.
+pub const MAX_SKY_VALUE: f32 = 65504.0;
+
+/// Counts of the values [`Sanitised::texel`] changed.
+#[derive(Default)]
+struct Sanitised {
+    non_finite: u64,
+    clamped: u64,
+}
+
+impl Sanitised {
+    /// NaN and infinities to 0 (alpha to 1), negative light to 0, values
+    /// above [`MAX_SKY_VALUE`] down to it, alpha into [0, 1].
+    fn texel(&mut self, t: [f32; 4]) -> [f32; 4] {
+        std::array::from_fn(|k| {
+            let v = t[k];
+            if !v.is_finite() {
+                self.non_finite += 1;
+                return if k == 3 { 1.0 } else { 0.0 };
+            }
+            if k == 3 {
+                return v.clamp(0.0, 1.0);
+            }
+            if v > MAX_SKY_VALUE {
+                self.clamped += 1;
+            }
+            v.clamp(0.0, MAX_SKY_VALUE)
+        })
+    }
+
+    fn report(&self, path: &Path) {
+        if self.non_finite > 0 {
+            log::warn!(
+                "sky image {}: {} values were NaN or infinite; drawn as 0",
+                path.display(),
+                self.non_finite
+            );
+        }
+        if self.clamped > 0 {
+            log::warn!(
+                "sky image {}: {} values were above {MAX_SKY_VALUE} (the largest a half-float \
+                 texture holds); clamped to it",
+                path.display(),
+                self.clamped
+            );
+        }
+    }
+}
+
+/// A `w` x `h` image at half the size (at least 1), by a 2x2 box filter.
+fn halve(w: u32, h: u32, prev: &[[f32; 4]]) -> Vec<[f32; 4]> {
+    let (nw, nh) = ((w / 2).max(1), (h / 2).max(1));
+    let at = |x: u32, y: u32| prev[(y.min(h - 1) * w + x.min(w - 1)) as usize];
+    let mut next = Vec::with_capacity((nw * nh) as usize);
+    for y in 0..nh {
+        for x in 0..nw {
+            let (a, b, c, d) = (
+                at(2 * x, 2 * y),
+                at(2 * x + 1, 2 * y),
+                at(2 * x, 2 * y + 1),
+                at(2 * x + 1, 2 * y + 1),
+            );
+            next.push(std::array::from_fn(|k| 0.25 * (a[k] + b[k] + c[k] + d[k])));
+        }
+    }
+    next
 }
 
 fn with_mips(width: u32, height: u32, base: Vec<[f32; 4]>) -> SkyTexture {
     let mut levels = vec![base];
     let (mut w, mut h) = (width, height);
     while w > 1 || h > 1 {
-        let (nw, nh) = ((w / 2).max(1), (h / 2).max(1));
-        let prev = levels.last().map(Vec::as_slice).unwrap_or(&[]);
-        let at = |x: u32, y: u32| prev[(y.min(h - 1) * w + x.min(w - 1)) as usize];
-        let mut next = Vec::with_capacity((nw * nh) as usize);
-        for y in 0..nh {
-            for x in 0..nw {
-                let (a, b, c, d) = (
-                    at(2 * x, 2 * y),
-                    at(2 * x + 1, 2 * y),
-                    at(2 * x, 2 * y + 1),
-                    at(2 * x + 1, 2 * y + 1),
-                );
-                next.push(std::array::from_fn(|k| 0.25 * (a[k] + b[k] + c[k] + d[k])));
-            }
-        }
+        let next = halve(w, h, levels.last().map(Vec::as_slice).unwrap_or(&[]));
         levels.push(next);
-        (w, h) = (nw, nh);
+        (w, h) = ((w / 2).max(1), (h / 2).max(1));
     }
     SkyTexture {
         width,
@@ -149,29 +207,50 @@ pub fn cube_face(d: [f64; 3]) -> (usize, f64, f64) {
     (face, 0.5 * (sc / ma + 1.0), 0.5 * (tc / ma + 1.0))
 }
 
+/// Largest cube-map face used: faces four times this wide make a panorama
+/// of [`MAX_SKY_SIDE`] x [`MAX_SKY_SIDE`]/2, the sky limit. Larger faces are
+/// halved on load (a 2x2 box filter, one face at a time) until they fit.
+pub const MAX_FACE_SIDE: u32 = MAX_SKY_SIDE / 4;
+
 /// Loads six square faces (+x, -x, +y, -y, +z, -z) and resamples them into a
-/// panorama four faces wide.
+/// panorama four faces wide, of at most [`MAX_SKY_SIDE`] x [`MAX_SKY_SIDE`]/2
+/// (faces past [`MAX_FACE_SIDE`] are reduced first, with a note).
 pub fn load_cubemap(paths: &[impl AsRef<Path>]) -> Result<SkyTexture> {
+    load_cubemap_within(paths, MAX_FACE_SIDE)
+}
+
+/// [`load_cubemap`] with faces reduced to at most `max_face` on a side.
+fn load_cubemap_within(paths: &[impl AsRef<Path>], max_face: u32) -> Result<SkyTexture> {
     if paths.len() != 6 {
         return Err(Error::Scene(format!(
             "a cube map needs 6 faces (+x, -x, +y, -y, +z, -z), got {}",
             paths.len()
         )));
     }
-    let mut faces = Vec::with_capacity(6);
+    let mut faces: Vec<(u32, u32, Vec<[f32; 4]>)> = Vec::with_capacity(6);
     for p in paths {
-        let (w, h, t) = load_linear(p.as_ref())?;
-        if w != h
-            || faces
-                .first()
-                .is_some_and(|(fw, _, _): &(u32, u32, Vec<[f32; 4]>)| *fw != w)
-        {
+        let (w, h, mut t) = load_linear(p.as_ref())?;
+        if w != h || faces.first().is_some_and(|(fw, _, _)| *fw != w) {
             return Err(Error::Scene(format!(
                 "cube map face {} is {w}x{h}: faces must be square and all the same size",
                 p.as_ref().display()
             )));
         }
-        faces.push((w, h, t));
+        let mut n = w;
+        while n > max_face {
+            t = halve(n, n, &t);
+            n /= 2;
+        }
+        if n != w {
+            log::info!(
+                "cube map face {} is {w}x{w}: reduced to {n}x{n} (the panorama it makes is at most \
+                 {}x{})",
+                p.as_ref().display(),
+                4 * max_face,
+                2 * max_face
+            );
+        }
+        faces.push((n, n, t));
     }
     let n = faces[0].0;
     let (w, h) = (4 * n, 2 * n);
@@ -228,6 +307,25 @@ mod tests {
         assert_eq!(sky.levels.last().map(Vec::len), Some(1));
         let mean = base.iter().map(|p| p[0]).sum::<f32>() / base.len() as f32;
         assert!((sky.levels[4][0][0] - mean).abs() < 1e-3);
+    }
+
+    #[test]
+    fn a_cube_map_of_large_faces_is_built_within_the_sky_limit() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let paths: Vec<_> = (0..6)
+            .map(|i| {
+                let p = dir.path().join(format!("face{i}.png"));
+                image::RgbImage::from_pixel(40, 40, image::Rgb([40 * i as u8, 100, 100]))
+                    .save(&p)
+                    .expect("face");
+                p
+            })
+            .collect();
+        // Faces of 40 with a limit of 16: halved to 20, then 10.
+        let sky = super::load_cubemap_within(&paths, 16).expect("loads");
+        assert_eq!((sky.width, sky.height), (40, 20));
+        assert!(sky.width <= 4 * 16);
+        assert_eq!(super::MAX_FACE_SIDE * 4, super::MAX_SKY_SIDE);
     }
 
     #[test]

@@ -195,7 +195,8 @@ fn gpu_shadow_edges_match_closed_forms_to_1e5_rad() {
             synge(r)
         );
     }
-    for r in [4.0, 15.0] {
+    // 1.01 rs: the closest a falling camera may come (scene validation).
+    for r in [blackhole::scene::FALLING_MIN_R, 4.0, 15.0] {
         let p = falling_edge(r);
         let e = gpu_edge("falling", r, p);
         println!(

@@ -47,11 +47,41 @@ pub struct WindowOptions {
     pub screenshot: Option<PathBuf>,
 }
 
+/// On Linux and the BSDs a window needs an X11 or Wayland display; say so
+/// plainly before winit fails with a message about its own source.
+fn check_display() -> Result<()> {
+    if cfg!(all(
+        unix,
+        not(target_os = "macos"),
+        not(target_os = "android")
+    )) {
+        let set = |v: &str| std::env::var_os(v).is_some_and(|s| !s.is_empty());
+        if !set("DISPLAY") && !set("WAYLAND_DISPLAY") {
+            return Err(Error::Usage(
+                "no display: set DISPLAY (X11) or WAYLAND_DISPLAY, or run under Xvfb \
+                 (`Xvfb :99 & DISPLAY=:99 blackhole window`)"
+                    .into(),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// winit's "os error at /path/to/winit/src/file.rs:12: why" as "why".
+fn without_source_location(msg: &str) -> &str {
+    match msg.find("os error at ") {
+        Some(at) => msg[at..].split_once(": ").map_or(msg, |(_, why)| why),
+        None => msg,
+    }
+}
+
 /// Opens the window and runs until it is closed (or `--frames` is reached).
 pub fn run(options: WindowOptions) -> Result<ExitCode> {
+    check_display()?;
     let event_loop = EventLoop::new().map_err(|e| {
         Error::Usage(format!(
-            "cannot open a window: {e} (no display? under a headless system run Xvfb and set DISPLAY)"
+            "cannot open a window: {} (no display? set DISPLAY (X11) or WAYLAND_DISPLAY, or run under Xvfb)",
+            without_source_location(&e.to_string())
         ))
     })?;
     event_loop.set_control_flow(ControlFlow::Wait);

@@ -1,6 +1,7 @@
 //! The command line: argument definitions (clap) and one module per command.
 //! `main.rs` only parses and calls [`run`].
 
+pub mod outputs;
 pub mod profile;
 pub mod render;
 pub mod trace;
@@ -205,6 +206,7 @@ fn window_help() -> String {
 
 /// Runs a parsed command line; the exit code on success.
 pub fn run(cli: Cli) -> Result<ExitCode, Error> {
+    crate::settings::init()?;
     match cli.command {
         Command::Render {
             view,
@@ -247,22 +249,34 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
             present,
             frames,
             screenshot,
-        } => crate::app::run(crate::app::WindowOptions {
-            scene: load_scene(view.scene.as_deref())?,
-            width: view.width,
-            height: view.height,
-            render_scale: match render_scale {
-                RenderScale::Fixed(v) => Some(v),
-                RenderScale::Auto => None,
-            },
-            present: match present {
-                Present::Fifo => crate::vk::PresentMode::Fifo,
-                Present::Mailbox => crate::vk::PresentMode::Mailbox,
-                Present::Immediate => crate::vk::PresentMode::Immediate,
-            },
-            frames,
-            screenshot,
-        }),
+        } => {
+            let scene = load_scene(view.scene.as_deref())?;
+            if let Some(path) = &screenshot {
+                outputs::Output {
+                    flag: "--screenshot",
+                    path,
+                    extensions: &["png"],
+                    what: "PNG",
+                }
+                .check(&scene.input_files(), None)?;
+            }
+            crate::app::run(crate::app::WindowOptions {
+                scene,
+                width: view.width,
+                height: view.height,
+                render_scale: match render_scale {
+                    RenderScale::Fixed(v) => Some(v),
+                    RenderScale::Auto => None,
+                },
+                present: match present {
+                    Present::Fifo => crate::vk::PresentMode::Fifo,
+                    Present::Mailbox => crate::vk::PresentMode::Mailbox,
+                    Present::Immediate => crate::vk::PresentMode::Immediate,
+                },
+                frames,
+                screenshot,
+            })
+        }
     }
 }
 

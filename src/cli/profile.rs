@@ -19,6 +19,17 @@ pub struct Options {
 /// `blackhole profile`: times the frames and prints (and optionally writes) the report.
 pub fn run_command(view: View, opts: Options) -> Result<ExitCode> {
     let scene = load_scene(view.scene.as_deref())?;
+    for (flag, path) in [("--json", &opts.json), ("--trace", &opts.trace)] {
+        if let Some(path) = path {
+            super::outputs::Output {
+                flag,
+                path,
+                extensions: &["json"],
+                what: "JSON",
+            }
+            .check(&scene.input_files(), None)?;
+        }
+    }
     let mut renderer = Renderer::new(RendererOptions::default())?;
     let (report, frames) = run_frames(
         &mut renderer,

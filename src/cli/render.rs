@@ -1,12 +1,16 @@
 //! `blackhole render`: stills and numbered sequences, offscreen, to PNG or EXR.
 
-use std::path::PathBuf;
+use std::collections::HashSet;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::Instant;
 
+use super::outputs::{self, Output, numbered};
 use super::{Aov, View, finish, load_scene};
 use crate::output::{self, FileFormat};
-use crate::{Error, Renderer, RendererOptions};
+use crate::{Error, Renderer, RendererOptions, Scene};
 
 /// What `render` writes besides the view and the file.
 pub struct Options {
@@ -21,16 +25,38 @@ pub struct Options {
 
 /// Set by Ctrl-C or SIGTERM: the render stops after the frame in hand (whose
 /// file is written whole or not at all), so only complete frames remain. A
-/// second signal ends the process at once.
-static STOP: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+/// second signal ends the process at once, removing the file being written
+/// and printing what was written.
+static STOP: AtomicBool = AtomicBool::new(false);
+/// Frames written so far and frames this run renders (0 for a still).
+static WRITTEN: AtomicU64 = AtomicU64::new(0);
+static TODO: AtomicU64 = AtomicU64::new(0);
 
 /// Exit status of a render stopped by a signal (128 + SIGINT, as shells do).
 const INTERRUPTED: u8 = 130;
 
-fn catch_signals() {
-    use std::sync::atomic::Ordering;
-    let installed = ctrlc::set_handler(|| {
+/// The one line printed when a run is interrupted.
+fn interrupted_summary(out: &Path) -> String {
+    let todo = TODO.load(Ordering::SeqCst);
+    if todo == 0 {
+        return format!("interrupted: {} not written", out.display());
+    }
+    format!(
+        "interrupted: wrote {} of {todo} frames; every file written is complete, and the same \
+         command with --resume renders the rest",
+        WRITTEN.load(Ordering::SeqCst)
+    )
+}
+
+fn catch_signals(out: &Path) {
+    let out = out.to_path_buf();
+    let installed = ctrlc::set_handler(move || {
         if STOP.swap(true, Ordering::SeqCst) {
+            output::remove_current_temp();
+            eprintln!(
+                "{} (stopped at once by a second signal)",
+                interrupted_summary(&out)
+            );
             std::process::exit(i32::from(INTERRUPTED));
         }
     });
@@ -40,7 +66,7 @@ fn catch_signals() {
 }
 
 fn stopped() -> bool {
-    STOP.load(std::sync::atomic::Ordering::SeqCst)
+    STOP.load(Ordering::SeqCst)
 }
 
 /// Renders what the arguments ask; checks every argument before the GPU.
@@ -59,8 +85,15 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
     } = view;
 
     // Check everything the user gave before touching the GPU.
+    let scene = load_scene(scene.as_deref())?;
+    Output {
+        flag: "--out",
+        path: &out,
+        extensions: &["png", "exr"],
+        what: "PNG (8-bit sRGB) or EXR (linear HDR)",
+    }
+    .check(&scene.input_files(), frames.as_ref())?;
     let format = FileFormat::from_path(&out)?;
-    check_out_dir(&out)?;
     if aov == Aov::Geodesic && format != FileFormat::Exr {
         return Err(Error::Usage(format!(
             "--aov geodesic writes float data: give an .exr --out, not {}",
@@ -72,27 +105,83 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
             "--exr-post applies to the image (--aov beauty) written as .exr".into(),
         ));
     }
-    let scene = load_scene(scene.as_deref())?;
     if aov == Aov::Geodesic && scene.disk.kind == crate::scene::DiskKind::Volumetric {
         return Err(Error::Usage(
             "--aov geodesic needs a thin disk (or none); this scene's disk is volumetric".into(),
         ));
+    }
+    if let Some(range) = &frames {
+        scene.check_frames(range)?;
     }
     let kind = match aov {
         Aov::Beauty if exr_post => crate::OutputKind::HdrPost,
         Aov::Beauty => format.output_kind(),
         Aov::Geodesic => crate::OutputKind::Geodesic,
     };
-    catch_signals();
-    let mut renderer = Renderer::new(RendererOptions::default())?;
-    let start = Instant::now();
-    if let Some(range) = frames {
-        let todo: Vec<u64> = range
-            .clone()
-            .filter(|&i| !(resume && numbered(&out, i).is_file()))
-            .collect();
-        let skipped = (range.end - range.start) - todo.len() as u64;
-        let bar = indicatif::ProgressBar::new(todo.len() as u64);
+    catch_signals(&out);
+    let job = Job {
+        scene: &scene,
+        out: &out,
+        format,
+        kind,
+        width,
+        height,
+        spp,
+    };
+    match frames {
+        Some(range) => job.sequence(range, resume),
+        None => job.still(),
+    }
+}
+
+/// What one `render` run makes.
+struct Job<'a> {
+    scene: &'a Scene,
+    out: &'a Path,
+    format: FileFormat,
+    kind: crate::OutputKind,
+    width: u32,
+    height: u32,
+    spp: u32,
+}
+
+impl Job<'_> {
+    fn still(&self) -> Result<ExitCode, Error> {
+        let (width, height) = (self.width, self.height);
+        let mut renderer = Renderer::new(RendererOptions::default())?;
+        let start = Instant::now();
+        let frame = renderer.render_samples(self.scene, width, height, self.kind, self.spp)?;
+        if stopped() {
+            eprintln!("{}", interrupted_summary(self.out));
+            finish(renderer)?;
+            return Ok(ExitCode::from(INTERRUPTED));
+        }
+        output::write_frame(&frame, self.out, self.format)?;
+        log::info!("GPU: {}", frame.timings);
+        println!(
+            "wrote {} ({width}x{height}) in {:.0} ms on {}",
+            self.out.display(),
+            start.elapsed().as_secs_f64() * 1e3,
+            renderer.device_name()
+        );
+        finish(renderer)
+    }
+
+    /// Frames `range` as numbered files, lazily (constant memory whatever
+    /// the range); with `resume`, those already complete are skipped.
+    fn sequence(&self, range: Range<u64>, resume: bool) -> Result<ExitCode, Error> {
+        let (width, height) = (self.width, self.height);
+        let done = if resume {
+            self.scan_done(&range)?
+        } else {
+            HashSet::new()
+        };
+        let total = range.end - range.start;
+        let todo = total - done.len() as u64;
+        TODO.store(todo, Ordering::SeqCst);
+        let mut renderer = Renderer::new(RendererOptions::default())?;
+        let start = Instant::now();
+        let bar = indicatif::ProgressBar::new(todo);
         bar.set_style(
             indicatif::ProgressStyle::with_template(
                 "{elapsed_precise} [{bar:40}] {pos}/{len} frames, ETA {eta} {msg}",
@@ -100,96 +189,105 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
             .progress_chars("=> "),
         );
-        let mut written = 0u64;
-        for &i in &todo {
+        for i in range.clone().filter(|i| !done.contains(i)) {
             if stopped() {
                 break;
             }
-            let path = numbered(&out, i);
-            let frame = renderer.render_samples(&scene.at_frame(i), width, height, kind, spp)?;
-            output::write_frame(&frame, &path, format)?;
-            written += 1;
+            let path = numbered(self.out, i);
+            let scene = self.scene.at_frame(i);
+            let frame = renderer.render_samples(&scene, width, height, self.kind, self.spp)?;
+            output::write_frame(&frame, &path, self.format)?;
+            WRITTEN.fetch_add(1, Ordering::SeqCst);
             bar.set_message(format!("{}", path.display()));
             bar.inc(1);
         }
         bar.finish_and_clear();
-        let skip_note = if skipped > 0 {
-            format!(", {skipped} already there")
-        } else {
-            String::new()
-        };
         if stopped() {
-            eprintln!(
-                "interrupted: wrote {written} of {} frames{skip_note}; every file written is complete, \
-                 and the same command with --resume renders the rest",
-                todo.len()
-            );
+            eprintln!("{}", interrupted_summary(self.out));
             finish(renderer)?;
             return Ok(ExitCode::from(INTERRUPTED));
         }
+        let skip_note = if done.is_empty() {
+            String::new()
+        } else {
+            format!(", {} already there", done.len())
+        };
         println!(
-            "wrote {written} frames of {}..{} ({width}x{height}){skip_note} in {:.1} s on {}",
-            numbered(&out, range.start).display(),
-            numbered(&out, range.end - 1).display(),
+            "wrote {} frames of {}..{} ({width}x{height}){skip_note} in {:.1} s on {}",
+            WRITTEN.load(Ordering::SeqCst),
+            numbered(self.out, range.start).display(),
+            numbered(self.out, range.end - 1).display(),
             start.elapsed().as_secs_f64(),
             renderer.device_name()
         );
-        return finish(renderer);
+        finish(renderer)
     }
-    let frame = renderer.render_samples(&scene, width, height, kind, spp)?;
-    if stopped() {
-        eprintln!("interrupted: {} not written", out.display());
-        finish(renderer)?;
-        return Ok(ExitCode::from(INTERRUPTED));
-    }
-    output::write_frame(&frame, &out, format)?;
-    log::info!("GPU: {}", frame.timings);
-    println!(
-        "wrote {} ({width}x{height}) in {:.0} ms on {}",
-        out.display(),
-        start.elapsed().as_secs_f64() * 1e3,
-        renderer.device_name()
-    );
-    finish(renderer)
-}
 
-/// `out.png` and frame 7 -> `out_0007.png`.
-fn numbered(out: &std::path::Path, index: u64) -> PathBuf {
-    let stem = out
-        .file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let ext = out
-        .extension()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    out.with_file_name(format!("{stem}_{index:04}.{ext}"))
-}
-
-/// The output's folder must exist and take a file before any rendering
-/// starts (a probe file is made and removed).
-fn check_out_dir(out: &std::path::Path) -> Result<(), Error> {
-    let dir = match out.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => std::path::Path::new("."),
-    };
-    if !dir.is_dir() {
-        return Err(Error::Usage(format!(
-            "--out {}: the folder {} does not exist",
-            out.display(),
-            dir.display()
-        )));
-    }
-    let probe = dir.join(format!(".blackhole-probe-{}", std::process::id()));
-    match std::fs::File::create(&probe) {
-        Ok(_) => {
-            let _ = std::fs::remove_file(&probe);
-            Ok(())
+    /// `--resume`: lists the output folder once and returns the frames of
+    /// `range` whose files are complete. Incomplete ones (empty, truncated,
+    /// another size) are reported and rendered again; temporary files of
+    /// this range left by a killed run are removed.
+    fn scan_done(&self, range: &Range<u64>) -> Result<HashSet<u64>, Error> {
+        let dir = match self.out.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        let io = |source| Error::Io {
+            path: dir.to_owned(),
+            source,
+        };
+        let mut done = HashSet::new();
+        let (mut broken, mut stale) = (Vec::new(), 0usize);
+        for entry in std::fs::read_dir(dir).map_err(io)? {
+            if stopped() {
+                break;
+            }
+            let entry = entry.map_err(io)?;
+            let name = entry.file_name().to_string_lossy().into_owned();
+            if let Some(target) = name
+                .strip_prefix('.')
+                .and_then(|n| n.rsplitn(3, '.').nth(2))
+            {
+                let ours =
+                    outputs::frame_index(self.out, target).is_some_and(|i| range.contains(&i));
+                if ours && output::is_temp_of(&name, target) {
+                    stale += usize::from(std::fs::remove_file(entry.path()).is_ok());
+                }
+                continue;
+            }
+            let Some(i) = outputs::frame_index(self.out, &name).filter(|i| range.contains(i))
+            else {
+                continue;
+            };
+            match output::check_complete(&entry.path(), self.format, self.width, self.height) {
+                Ok(()) => {
+                    done.insert(i);
+                }
+                Err(why) => broken.push(format!("{name} ({why})")),
+            }
         }
-        Err(e) => Err(Error::Usage(format!(
-            "--out {}: cannot write in {}: {e}",
-            out.display(),
-            dir.display()
-        ))),
+        if stale > 0 {
+            eprintln!("resume: removed {stale} temporary file(s) left by an interrupted run");
+        }
+        if !broken.is_empty() {
+            broken.sort();
+            let shown = broken
+                .iter()
+                .take(5)
+                .cloned()
+                .collect::<Vec<_>>()
+                .join(", ");
+            let more = broken.len().saturating_sub(5);
+            let more = if more > 0 {
+                format!(" and {more} more")
+            } else {
+                String::new()
+            };
+            eprintln!(
+                "resume: {} incomplete frame(s) will be rendered again: {shown}{more}",
+                broken.len()
+            );
+        }
+        Ok(done)
     }
 }

@@ -15,6 +15,13 @@ use crate::{Error, Result};
 /// `blackhole trace`: writes the SVG for the scene (or preset) named.
 pub fn run(scene: Option<&str>, out: &Path) -> Result<std::process::ExitCode> {
     let scene = super::load_scene(scene)?;
+    super::outputs::Output {
+        flag: "--out",
+        path: out,
+        extensions: &["svg"],
+        what: "SVG",
+    }
+    .check(&scene.input_files(), None)?;
     write_svg(&scene, out)?;
     println!("wrote {}", out.display());
     Ok(std::process::ExitCode::SUCCESS)

@@ -80,17 +80,126 @@ pub fn write_frame(frame: &Frame, path: &Path, format: FileFormat) -> Result<()>
     })
 }
 
-/// Writes `path` through `write(tmp)` and a rename; removes `tmp` on failure.
+/// Whether `path` holds a whole frame of `width` x `height` in `format`, as
+/// [`write_frame`] writes it: a PNG whose header has that size and which
+/// ends with its closing chunk, an EXR that decodes to that size. The reason
+/// in words if not ("empty", "truncated", "3x2, not 64x36", ...).
+pub fn check_complete(
+    path: &Path,
+    format: FileFormat,
+    width: u32,
+    height: u32,
+) -> std::result::Result<(), String> {
+    let len = std::fs::metadata(path).map_err(|e| e.to_string())?.len();
+    if len == 0 {
+        return Err("empty".into());
+    }
+    let reader = image::ImageReader::open(path)
+        .map_err(|e| e.to_string())?
+        .with_guessed_format()
+        .map_err(|e| e.to_string())?;
+    let (w, h) = match format {
+        FileFormat::Png => {
+            let (w, h) = reader
+                .into_dimensions()
+                .map_err(|_| "truncated or not a PNG".to_string())?;
+            // Every PNG ends with the IEND chunk: length 0, type, CRC.
+            const IEND: [u8; 12] = [0, 0, 0, 0, b'I', b'E', b'N', b'D', 0xAE, 0x42, 0x60, 0x82];
+            use std::io::{Read, Seek, SeekFrom};
+            let mut tail = [0u8; 12];
+            let mut f = std::fs::File::open(path).map_err(|e| e.to_string())?;
+            f.seek(SeekFrom::End(-12))
+                .and_then(|_| f.read_exact(&mut tail))
+                .map_err(|_| "truncated".to_string())?;
+            if tail != IEND {
+                return Err("truncated (no closing IEND chunk)".into());
+            }
+            (w, h)
+        }
+        FileFormat::Exr => {
+            let img = reader
+                .decode()
+                .map_err(|_| "truncated or not an EXR".to_string())?;
+            (img.width(), img.height())
+        }
+    };
+    if (w, h) != (width, height) {
+        return Err(format!("{w}x{h}, not {width}x{height}"));
+    }
+    Ok(())
+}
+
+/// The temporary file being written now, if any: a second interrupt removes
+/// it before the process ends ([`remove_current_temp`]).
+static CURRENT_TEMP: std::sync::Mutex<Option<PathBuf>> = std::sync::Mutex::new(None);
+
+fn set_current_temp(tmp: Option<&Path>) {
+    if let Ok(mut current) = CURRENT_TEMP.lock() {
+        *current = tmp.map(Path::to_path_buf);
+    }
+}
+
+/// Removes the temporary file being written, if any (for a process that is
+/// about to end in the middle of a write).
+pub fn remove_current_temp() {
+    if let Ok(mut current) = CURRENT_TEMP.lock()
+        && let Some(tmp) = current.take()
+    {
+        let _ = std::fs::remove_file(tmp);
+    }
+}
+
+/// Whether `name` is a temporary file of this module's for the file `target`
+/// (`.target.<pid>.tmp`), left by a process that was killed mid-write.
+pub fn is_temp_of(name: &str, target: &str) -> bool {
+    name.strip_prefix('.')
+        .and_then(|n| n.strip_prefix(target))
+        .and_then(|n| n.strip_prefix('.'))
+        .and_then(|n| n.strip_suffix(".tmp"))
+        .is_some_and(|pid| !pid.is_empty() && pid.bytes().all(|b| b.is_ascii_digit()))
+}
+
+/// Writes `path` through `write(tmp)`, flushes the file to the disk and
+/// renames it into place (then flushes the folder), so a crash or a power
+/// cut leaves the old file or the whole new one; removes `tmp` on failure.
 pub fn write_atomically(path: &Path, write: impl FnOnce(&Path) -> Result<()>) -> Result<()> {
     let tmp = temp_path(path);
-    let result = write(&tmp).and_then(|()| {
-        std::fs::rename(&tmp, path).map_err(|source| Error::Io {
-            path: path.to_owned(),
-            source,
+    set_current_temp(Some(&tmp));
+    let io = |source| Error::Io {
+        path: path.to_owned(),
+        source,
+    };
+    let result = write(&tmp)
+        .and_then(|()| {
+            std::fs::File::open(&tmp)
+                .and_then(|f| f.sync_all())
+                .map_err(io)
         })
-    });
+        .and_then(|()| std::fs::rename(&tmp, path).map_err(io));
     if result.is_err() {
         let _ = std::fs::remove_file(&tmp);
+    } else if let Some(dir) = path.parent() {
+        let dir = if dir.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            dir
+        };
+        // The rename itself reaches the disk with the folder.
+        let _ = std::fs::File::open(dir).and_then(|d| d.sync_all());
     }
+    set_current_temp(None);
     result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn temporaries_are_recognised_by_name() {
+        assert!(is_temp_of(".f_0003.png.4242.tmp", "f_0003.png"));
+        assert!(!is_temp_of(".f_0003.png.tmp", "f_0003.png"));
+        assert!(!is_temp_of(".f_0003.png.42x.tmp", "f_0003.png"));
+        assert!(!is_temp_of("f_0003.png", "f_0003.png"));
+    }
 }

@@ -90,6 +90,7 @@ pub struct Renderer {
 impl Renderer {
     /// Opens the device and builds the pipelines.
     pub fn new(options: RendererOptions) -> Result<Self> {
+        crate::settings::init()?;
         let gpu = Gpu::new(options.validation)?;
         Self::with_gpu(gpu)
     }

@@ -20,6 +20,19 @@ pub struct Keyframe {
     pub vfov_deg: Option<f64>,
 }
 
+impl Keyframe {
+    /// The camera this keyframe sets (`up` and the observer from `base`).
+    pub fn camera(&self, base: &Camera) -> Camera {
+        Camera {
+            position: self.position,
+            look_at: self.look_at,
+            up: base.up,
+            vfov_deg: self.vfov_deg.unwrap_or(base.vfov_deg),
+            observer: base.observer,
+        }
+    }
+}
+
 /// How the camera moves.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
@@ -37,6 +50,18 @@ pub enum CameraPath {
     /// 1.05 rs; `fall_seconds` of animation take it there. Pair it with
     /// `observer = "falling"`.
     Fall,
+}
+
+impl CameraPath {
+    /// The name a scene file uses.
+    pub fn name(self) -> &'static str {
+        match self {
+            CameraPath::Static => "static",
+            CameraPath::Orbit => "orbit",
+            CameraPath::Keyframes => "keyframes",
+            CameraPath::Fall => "fall",
+        }
+    }
 }
 
 /// The `[animation]` section.

@@ -63,19 +63,40 @@ pub fn preset_names() -> Vec<&'static str> {
     PRESETS.iter().map(|p| p.0).collect()
 }
 
+/// Every table and key name a scene file may use (from the default scene
+/// written out), for hints about look-alike names.
+fn known_names() -> Vec<String> {
+    fn walk(t: &toml::Table, out: &mut Vec<String>) {
+        for (k, v) in t {
+            out.push(k.clone());
+            match v {
+                toml::Value::Table(t) => walk(t, out),
+                toml::Value::Array(a) => a.iter().for_each(|v| {
+                    if let toml::Value::Table(t) = v {
+                        walk(t, out);
+                    }
+                }),
+                _ => {}
+            }
+        }
+    }
+    let mut out = Vec::new();
+    if let Some(t) = Scene::default()
+        .to_toml()
+        .ok()
+        .and_then(|s| s.parse::<toml::Table>().ok())
+    {
+        walk(&t, &mut out);
+    }
+    out
+}
+
 impl Scene {
     /// The scene at frame `index` of its animation (the camera moved).
     pub fn at_frame(&self, index: u64) -> Scene {
-        let t = self.animation.time_of(index);
         Scene {
-            camera: self.animation.camera_at(
-                &self.camera,
-                t,
-                self.black_holes
-                    .first()
-                    .map_or((DVec3::ZERO, 1.0), |h| (DVec3::from(h.position), h.rs)),
-            ),
-            time: t,
+            camera: self.camera_at_frame(index),
+            time: self.animation.time_of(index),
             ..self.clone()
         }
     }
@@ -84,12 +105,12 @@ impl Scene {
     pub fn from_toml(src: &str, origin: &str) -> Result<Self> {
         let scene: Scene = toml::from_str(src).map_err(|e| {
             let line = e.span().map(|s| locate::line_of(src, s.start));
-            let msg = locate::compact_numbers(&e.message().trim().replace('\n', " "));
-            let context = e
-                .span()
-                .and_then(|s| locate::line_text(src, s.start))
-                .map(|t| format!(" (in `{t}`)"))
-                .unwrap_or_default();
+            let mut msg = locate::compact_numbers(&e.message().trim().replace('\n', " "));
+            let text = e.span().and_then(|s| locate::line_text(src, s.start));
+            if let Some(hint) = locate::odd_name_hint(&msg, text.as_deref(), &known_names()) {
+                msg.push_str(&hint);
+            }
+            let context = text.map(|t| format!(" (in `{t}`)")).unwrap_or_default();
             match line {
                 Some(l) => Error::Scene(format!("{origin}:{l}: {msg}{context}")),
                 None => Error::Scene(format!("{origin}: {msg}")),
@@ -119,29 +140,52 @@ impl Scene {
         toml::to_string(self).map_err(|e| Error::Scene(format!("writing the scene as TOML: {e}")))
     }
 
-    /// Loads a scene file, or a built-in preset by name.
+    /// Loads a scene file, or a built-in preset by name. A path is read only
+    /// if it is a regular file of at most [`crate::input::MAX_SCENE_BYTES`];
+    /// a folder named like a preset does not hide the preset.
     pub fn load(name_or_path: &str) -> Result<Self> {
         let path = Path::new(name_or_path);
-        if path.exists() {
-            let src = std::fs::read_to_string(path).map_err(|source| Error::Io {
-                path: path.to_owned(),
-                source,
-            })?;
-            let mut scene = Self::from_toml(&src, name_or_path)?;
-            scene.base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-            scene.check_files(&src, name_or_path)?;
-            return Ok(scene);
+        let preset = PRESETS.iter().find(|p| p.0 == name_or_path);
+        let from_preset =
+            |(name, _, src): &(&str, &str, &str)| Self::from_toml(src, &format!("preset `{name}`"));
+        match std::fs::metadata(path) {
+            Ok(meta) if meta.is_dir() => {
+                if let Some(p) = preset {
+                    log::warn!(
+                        "`{name_or_path}` is a folder here, not a scene file: using the built-in \
+                         preset `{name_or_path}` (name a file inside the folder to use one)"
+                    );
+                    return from_preset(p);
+                }
+                Err(Error::Scene(format!(
+                    "--scene {name_or_path}: is a folder, not a scene file (or a preset: {})",
+                    preset_names().join(", ")
+                )))
+            }
+            Ok(_) => {
+                let src = crate::input::read_text(path, crate::input::MAX_SCENE_BYTES)
+                    .map_err(|why| Error::Scene(format!("--scene {name_or_path}: {why}")))?;
+                let mut scene = Self::from_toml(&src, name_or_path)?;
+                scene.base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+                scene.source = Some(path.to_path_buf());
+                scene.check_files(&src, name_or_path)?;
+                Ok(scene)
+            }
+            Err(e) => match preset {
+                Some(p) => from_preset(p),
+                None if e.kind() != std::io::ErrorKind::NotFound => Err(Error::Scene(format!(
+                    "--scene {name_or_path}: cannot read it: {e}"
+                ))),
+                None => Err(Error::Scene(format!(
+                    "no scene file or preset named `{name_or_path}` (presets: {})",
+                    preset_names().join(", ")
+                ))),
+            },
         }
-        if let Some((name, _, src)) = PRESETS.iter().find(|p| p.0 == name_or_path) {
-            return Self::from_toml(src, &format!("preset `{name}`"));
-        }
-        Err(Error::Scene(format!(
-            "no scene file or preset named `{name_or_path}` (presets: {})",
-            preset_names().join(", ")
-        )))
     }
 
-    /// Checks that the files the scene names exist (decoding comes later).
+    /// Checks that the files the scene names are regular files (decoding
+    /// comes later).
     fn check_files(&self, src: &str, origin: &str) -> Result<()> {
         use locate::Seg::Key;
         let key = if self.sky.kind == SkyKind::Image {
@@ -150,17 +194,27 @@ impl Scene {
             "cubemap"
         };
         for f in self.sky.files(&self.base_dir) {
-            if !f.is_file() {
+            if let Err(why) = crate::input::check_regular(&f) {
                 let line = locate::line_of_key(src, &[Key("sky"), Key(key)])
                     .map(|l| format!(":{l}"))
                     .unwrap_or_default();
                 return Err(Error::Scene(format!(
-                    "{origin}{line}: sky.{key}: cannot read {}: no such file",
+                    "{origin}{line}: sky.{key}: cannot read {}: {why}",
                     f.display()
                 )));
             }
         }
         Ok(())
+    }
+
+    /// Every file the scene reads: the scene file itself and its sky images
+    /// (a run must not write over them).
+    pub fn input_files(&self) -> Vec<std::path::PathBuf> {
+        self.source
+            .iter()
+            .cloned()
+            .chain(self.sky.files(&self.base_dir))
+            .collect()
     }
 
     /// The built-in default scene.

@@ -105,8 +105,86 @@ pub fn compact_numbers(text: &str) -> String {
     out
 }
 
+/// For a name the parser refused ("unknown field `x`, expected one of `a`,
+/// `b`", "unknown variant `x`", or an unquoted key that is not plain ASCII):
+/// when the name holds characters that are not plain ASCII (a Cyrillic `а`
+/// for a Latin `a`, a zero-width space), the text naming each by code point
+/// and position, and the known name it resembles. `line` is the source line
+/// of the error; `known` the names a scene file may use.
+pub fn odd_name_hint(msg: &str, line: Option<&str>, known: &[String]) -> Option<String> {
+    let (name, expected): (String, Vec<&str>) = if let Some(rest) = msg
+        .strip_prefix("unknown field `")
+        .or_else(|| msg.strip_prefix("unknown variant `"))
+    {
+        let (name, tail) = rest.split_once('`')?;
+        (
+            name.to_string(),
+            tail.split('`').skip(1).step_by(2).collect(),
+        )
+    } else if msg.starts_with("invalid unquoted key") {
+        let key = line?.split('=').next()?;
+        let key = key.trim().trim_matches(|c| c == '[' || c == ']').trim();
+        let last = key.rsplit('.').next()?.trim();
+        (last.to_string(), Vec::new())
+    } else {
+        return None;
+    };
+    let odd: Vec<String> = name
+        .chars()
+        .enumerate()
+        .filter(|(_, c)| !c.is_ascii_graphic())
+        .map(|(i, c)| format!("U+{:04X} {c:?} at character {}", u32::from(c), i + 1))
+        .collect();
+    if odd.is_empty() {
+        return None;
+    }
+    let len = name.chars().count();
+    let resembles = |known: &str| {
+        known.chars().count() == len
+            && known
+                .chars()
+                .zip(name.chars())
+                .all(|(k, n)| k == n || !n.is_ascii_graphic())
+    };
+    let guess = expected
+        .into_iter()
+        .find(|k| resembles(k))
+        .or_else(|| known.iter().map(String::as_str).find(|k| resembles(k)));
+    Some(format!(
+        "; `{name}` holds {}, not plain ASCII{}",
+        odd.join(", "),
+        guess
+            .map(|g| format!(": did you mean `{g}`?"))
+            .unwrap_or_default()
+    ))
+}
+
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_look_alike_character_is_pointed_at() {
+        let h = super::odd_name_hint(
+            "unknown field `c\u{430}mera`, expected one of `camera`, `disk`",
+            None,
+            &[],
+        )
+        .expect("a hint");
+        assert!(h.contains("U+0430") && h.contains("character 2"), "{h}");
+        assert!(h.contains("did you mean `camera`?"), "{h}");
+        let known = ["camera".to_string(), "disk".to_string()];
+        let h = super::odd_name_hint(
+            "invalid unquoted key, expected letters",
+            Some("[c\u{430}mera]"),
+            &known,
+        )
+        .expect("a hint");
+        assert!(h.contains("did you mean `camera`?"), "{h}");
+        assert_eq!(
+            super::odd_name_hint("unknown field `camra`, expected `camera`", None, &[]),
+            None
+        );
+    }
+
     #[test]
     fn long_numbers_are_compacted() {
         let big = format!("{}", 1e300f64);

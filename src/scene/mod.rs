@@ -3,14 +3,17 @@
 //! ([`validate`]), and camera animation ([`animation`]).
 
 pub mod animation;
+mod frames;
 pub mod load;
 mod locate;
 pub mod schema;
 mod validate;
 
 pub use animation::{Animation, CameraPath, Keyframe};
+pub use frames::MAX_SEQUENCE_FRAMES;
 pub use load::{PRESETS, preset_names};
 pub use schema::*;
+pub use validate::FALLING_MIN_R;
 
 #[cfg(test)]
 mod tests {

@@ -430,6 +430,9 @@ pub struct Scene {
     /// Folder that relative file names in the scene are resolved against.
     #[serde(skip)]
     pub base_dir: std::path::PathBuf,
+    /// The file the scene was read from (none for a preset or an edit).
+    #[serde(skip)]
+    pub source: Option<std::path::PathBuf>,
 }
 
 impl Default for Scene {
@@ -447,6 +450,7 @@ impl Default for Scene {
             animation: Animation::default(),
             time: 0.0,
             base_dir: std::path::PathBuf::new(),
+            source: None,
         }
     }
 }

@@ -4,7 +4,8 @@
 use glam::DVec3;
 
 use super::locate::Seg::{self, Idx, Key};
-use super::{CameraPath, DiskKind, MAX_HOLES, Scene, SkyKind};
+use super::locate::display_path;
+use super::{Camera, CameraPath, DiskKind, MAX_HOLES, Scene, SkyKind};
 use crate::physics::observer::{ObserverKind, reference_hole};
 
 /// A rejected value: its key path, the value as written, and the reason.
@@ -22,6 +23,10 @@ fn fail(path: &[Seg], value: impl std::fmt::Display, why: impl Into<String>) -> 
 /// Largest magnitude of any number in a scene: the GPU works in 32-bit
 /// floats, and squares of lengths must stay far inside their range.
 pub const LIMIT: f64 = 1e9;
+
+/// The closest a `"falling"` camera may come to a horizon, in rs (the fall
+/// animation ends at 1.05 rs).
+pub const FALLING_MIN_R: f64 = 1.01;
 
 /// Finite and at most [`LIMIT`] in size.
 trait InRange {
@@ -108,30 +113,6 @@ impl Scene {
     }
 
     fn validate_camera_and_holes(&self) -> Check {
-        let c = &self.camera;
-        finite3(&[Key("camera"), Key("position")], &c.position)?;
-        finite3(&[Key("camera"), Key("look_at")], &c.look_at)?;
-        finite3(&[Key("camera"), Key("up")], &c.up)?;
-        rule(
-            c.vfov_deg > 0.0 && c.vfov_deg < 180.0,
-            &[Key("camera"), Key("vfov_deg")],
-            c.vfov_deg,
-            "must be in (0, 180) degrees",
-        )?;
-        let fwd = DVec3::from(c.look_at) - DVec3::from(c.position);
-        rule(
-            fwd.length() >= 1e-9,
-            &[Key("camera"), Key("look_at")],
-            vec3(&c.look_at),
-            "must differ from camera.position",
-        )?;
-        rule(
-            DVec3::from(c.up).cross(fwd.normalize()).length() >= 1e-6,
-            &[Key("camera"), Key("up")],
-            vec3(&c.up),
-            "must not be zero or parallel to the view direction",
-        )?;
-
         let n = self.black_holes.len();
         rule(
             n > 0,
@@ -152,38 +133,98 @@ impl Scene {
             if let Some(m) = h.mass_solar {
                 positive(&key("mass_solar"), m)?;
             }
+        }
+        self.check_camera(&self.camera, &[Key("camera")])
+    }
+
+    /// The rules every camera obeys, wherever it comes from: `[camera]`, an
+    /// `[[animation.keyframe]]` (`at` is then its key path) or any frame of
+    /// an animation ([`Scene::check_frames`]).
+    pub(super) fn check_camera(&self, c: &Camera, at: &[Seg]) -> Check {
+        let key = |k: &'static str| [at, &[Key(k)]].concat();
+        let is_camera = at == [Key("camera")];
+        finite3(&key("position"), &c.position)?;
+        finite3(&key("look_at"), &c.look_at)?;
+        finite3(&[Key("camera"), Key("up")], &c.up)?;
+        rule(
+            c.vfov_deg > 0.0 && c.vfov_deg < 180.0,
+            &key("vfov_deg"),
+            c.vfov_deg,
+            "must be in (0, 180) degrees",
+        )?;
+        let fwd = DVec3::from(c.look_at) - DVec3::from(c.position);
+        rule(
+            fwd.length() >= 1e-9,
+            &key("look_at"),
+            vec3(&c.look_at),
+            format!("must differ from {}", display_path(&key("position"))),
+        )?;
+        let parallel = DVec3::from(c.up).cross(fwd.normalize()).length() < 1e-6;
+        if is_camera {
             rule(
-                (DVec3::from(c.position) - DVec3::from(h.position)).length() > h.rs,
-                &[Key("camera"), Key("position")],
+                !parallel,
+                &key("up"),
+                vec3(&c.up),
+                "must not be zero or parallel to the view direction",
+            )?;
+        } else {
+            rule(
+                !parallel,
+                &key("look_at"),
+                vec3(&c.look_at),
+                format!(
+                    "makes the view direction parallel to camera.up = {}",
+                    vec3(&c.up)
+                ),
+            )?;
+        }
+        let cam = DVec3::from(c.position);
+        for (i, h) in self.black_holes.iter().enumerate() {
+            rule(
+                (cam - DVec3::from(h.position)).length() > h.rs,
+                &key("position"),
                 vec3(&c.position),
                 format!("is inside the horizon of black_hole[{i}]"),
             )?;
         }
-        if c.observer == ObserverKind::Orbiting {
-            let holes = self.physics_holes();
-            let cam = DVec3::from(c.position);
-            if let Some(h) = reference_hole(&holes, cam) {
-                let rel = cam - h.position;
+        let holes = self.physics_holes();
+        let Some(h) = reference_hole(&holes, cam) else {
+            return Ok(());
+        };
+        let rel = cam - h.position;
+        match c.observer {
+            ObserverKind::Orbiting => {
                 rule(
                     rel.length() > 1.5 * h.rs,
-                    &[Key("camera"), Key("observer")],
-                    "\"orbiting\"",
+                    &key("position"),
+                    vec3(&c.position),
                     format!(
-                        "needs the camera outside the photon sphere (r > 1.5 rs = {}); it is at r = {:.4}",
-                        1.5 * h.rs,
-                        rel.length()
+                        "is inside the photon sphere (r = {:.4} <= 1.5 rs = {}), where no \
+                         \"orbiting\" observer can be",
+                        rel.length(),
+                        1.5 * h.rs
                     ),
                 )?;
                 let axis = DVec3::from(self.disk.normal).normalize_or_zero();
                 rule(
                     axis == DVec3::ZERO || axis.cross(rel.normalize()).length() > 1e-6,
-                    &[Key("camera"), Key("observer")],
-                    "\"orbiting\"",
-                    "needs the camera off the disk's axis (an orbit around the axis has no direction there)",
-                )?;
+                    &key("position"),
+                    vec3(&c.position),
+                    "is on the disk's axis, where an \"orbiting\" observer's orbit has no direction",
+                )
             }
+            ObserverKind::Falling if self.physics.gravity => rule(
+                rel.length() >= FALLING_MIN_R * h.rs,
+                &key("position"),
+                vec3(&c.position),
+                format!(
+                    "is {:.3e} rs from the horizon; a \"falling\" observer must stay at r >= {FALLING_MIN_R} rs \
+                     (closer, its speed is within 32-bit rounding of light's)",
+                    rel.length() / h.rs - 1.0
+                ),
+            ),
+            _ => Ok(()),
         }
-        Ok(())
     }
 
     fn validate_disk(&self) -> Check {
@@ -217,11 +258,19 @@ impl Scene {
         }
         finite(&key("speed"), d.speed)?;
         count_in(&key("noise_octaves"), d.noise_octaves, 1, 8)?;
+        let photon_sphere = match self.black_holes.first() {
+            Some(h) if self.physics.gravity => 1.5 * h.rs,
+            _ => 0.0,
+        };
         rule(
-            d.kind != DiskKind::Volumetric || d.inner_radius > 0.0,
+            d.kind != DiskKind::Volumetric
+                || (d.inner_radius > 0.0 && d.inner_radius >= photon_sphere),
             &key("inner_radius"),
             d.inner_radius,
-            "must be > 0 for a volumetric disk",
+            format!(
+                "must be > 0 and outside the photon sphere (>= 1.5 rs = {photon_sphere}) for a \
+                 volumetric disk, whose gas is sampled along paths that leave it"
+            ),
         )
     }
 
@@ -346,6 +395,41 @@ impl Scene {
                 &[Key("animation"), Key("keyframe"), Idx(i), Key("time")],
                 k.time,
                 "keyframe times must be finite and increasing",
+            )?;
+            let at = [Key("animation"), Key("keyframe"), Idx(i)];
+            self.check_camera(&k.camera(&self.camera), &at)?;
+        }
+        if a.camera == CameraPath::Orbit {
+            self.check_orbit()?;
+        }
+        Ok(())
+    }
+
+    /// An orbit (a circle of latitude about `look_at`) that passes inside a
+    /// horizon is refused as a whole, whichever frames land there.
+    fn check_orbit(&self) -> Check {
+        let a = &self.animation;
+        let target = DVec3::from(self.camera.look_at);
+        let radius = if a.orbit_radius > 0.0 {
+            a.orbit_radius
+        } else {
+            (DVec3::from(self.camera.position) - target).length()
+        };
+        let inc = a.inclination_deg.to_radians();
+        let (centre, rho) = (target + DVec3::Y * radius * inc.sin(), radius * inc.cos());
+        for (i, h) in self.black_holes.iter().enumerate() {
+            let v = DVec3::from(h.position) - centre;
+            let across = (v.x * v.x + v.z * v.z).sqrt();
+            let closest = (v.y * v.y + (across - rho) * (across - rho)).sqrt();
+            rule(
+                closest > h.rs,
+                &[Key("animation"), Key("orbit_radius")],
+                a.orbit_radius,
+                format!(
+                    "the orbit (radius {radius:.4} about camera.look_at) passes inside the horizon of \
+                     black_hole[{i}] (closest approach {closest:.4}, rs = {})",
+                    h.rs
+                ),
             )?;
         }
         Ok(())

@@ -183,14 +183,9 @@ impl Drop for CommandContext {
 }
 
 /// Longest wait for one submission: `BLACKHOLE_GPU_TIMEOUT_S` seconds, or
-/// 600 (a 4K volumetric frame on a CPU driver takes seconds, not minutes).
+/// 600 (see [`crate::settings`]).
 pub fn gpu_timeout() -> std::time::Duration {
-    let secs = std::env::var("BLACKHOLE_GPU_TIMEOUT_S")
-        .ok()
-        .and_then(|v| v.parse::<f64>().ok())
-        .filter(|s| s.is_finite() && *s > 0.0)
-        .unwrap_or(600.0);
-    std::time::Duration::from_secs_f64(secs.min(1e7))
+    crate::settings::get().gpu_timeout
 }
 
 /// Longest wait before resources are freed: [`gpu_timeout`], but at least

@@ -103,10 +103,7 @@ impl Gpu {
             Ok(p) => p,
             Err(vk::Result::ERROR_INITIALIZATION_FAILED) => Vec::new(),
             Err(result) => {
-                return Err(Error::Vulkan {
-                    what: "listing Vulkan devices".into(),
-                    result,
-                });
+                return Err(super::instance::loader_failure("listing devices", result));
             }
         };
         if physicals.is_empty() {
@@ -117,9 +114,7 @@ impl Gpu {
             .map(|&pd| Self::describe(&instance, pd, present))
             .collect::<Result<_>>()?;
 
-        let wanted = std::env::var("BLACKHOLE_DEVICE")
-            .ok()
-            .filter(|s| !s.is_empty());
+        let wanted = crate::settings::get().device.clone();
         let names: Vec<String> = candidates.iter().map(|c| c.name.clone()).collect();
         if let Some(w) = &wanted {
             let lw = w.to_lowercase();
@@ -275,7 +270,7 @@ impl Gpu {
             unsafe { inst.get_physical_device_properties2(pd, &mut props2) };
         }
         // BLACKHOLE_NO_QUAD=1 takes the fall-back shader (for comparisons).
-        let quad_compute = std::env::var_os("BLACKHOLE_NO_QUAD").is_none()
+        let quad_compute = !crate::settings::get().no_quad
             && api >= vk::API_VERSION_1_1
             && subgroup
                 .supported_stages
@@ -290,7 +285,7 @@ impl Gpu {
         // (for comparisons).
         let disk_split = quad_compute
             && props.device_type == vk::PhysicalDeviceType::CPU
-            && std::env::var_os("BLACKHOLE_NO_SPLIT").is_none()
+            && !crate::settings::get().no_split
             && subgroup
                 .supported_operations
                 .contains(vk::SubgroupFeatureFlags::BALLOT);

@@ -9,10 +9,8 @@
 //! - `alloc:<name>`: allocating memory for the first resource whose name
 //!   contains `<name>` fails as gpu-allocator's out-of-memory does.
 //!
-//! Unset (the normal case) nothing changes. An unknown value is ignored with
-//! a warning rather than refused: this is a test hook, not a user setting.
-
-use std::sync::OnceLock;
+//! Unset (the normal case) nothing changes. An unknown value is refused like
+//! any other bad setting ([`crate::settings`]).
 
 use ash::vk;
 
@@ -25,22 +23,13 @@ pub enum Fault {
     Alloc(String),
 }
 
-/// The fault `BLACKHOLE_FAULT` asks for, if any (read once).
+/// The fault `BLACKHOLE_FAULT` asks for, if any.
 pub fn injected() -> Option<&'static Fault> {
-    static FAULT: OnceLock<Option<Fault>> = OnceLock::new();
-    FAULT
-        .get_or_init(|| {
-            let v = std::env::var("BLACKHOLE_FAULT").ok()?;
-            let f = parse(&v);
-            if f.is_none() {
-                log::warn!("BLACKHOLE_FAULT={v} is not a known fault; ignored");
-            }
-            f
-        })
-        .as_ref()
+    crate::settings::get().fault.as_ref()
 }
 
-fn parse(v: &str) -> Option<Fault> {
+/// `device-lost`, `out-of-device-memory` or `alloc:<name>`; `None` otherwise.
+pub fn parse(v: &str) -> Option<Fault> {
     match v {
         "device-lost" => Some(Fault::Wait(vk::Result::ERROR_DEVICE_LOST)),
         "out-of-device-memory" => Some(Fault::Wait(vk::Result::ERROR_OUT_OF_DEVICE_MEMORY)),

@@ -30,13 +30,36 @@ impl Validation {
     /// `BLACKHOLE_VALIDATION=1` requires it, `=0` turns it off; otherwise debug
     /// builds enable it when present.
     pub fn from_env() -> Self {
-        match std::env::var("BLACKHOLE_VALIDATION").as_deref() {
-            Ok("1") | Ok("true") | Ok("on") => Validation::Required,
-            Ok("0") | Ok("false") | Ok("off") => Validation::Off,
-            _ if cfg!(debug_assertions) => Validation::IfPresent,
-            _ => Validation::Off,
+        match crate::settings::get().validation {
+            Some(true) => Validation::Required,
+            Some(false) => Validation::Off,
+            None if cfg!(debug_assertions) => Validation::IfPresent,
+            None => Validation::Off,
         }
     }
+}
+
+/// The loader's variables that name driver manifests, as set (`VAR=value`).
+fn manifests_named() -> Option<String> {
+    let named: Vec<String> = ["VK_DRIVER_FILES", "VK_ICD_FILENAMES", "VK_ADD_DRIVER_FILES"]
+        .iter()
+        .filter_map(|v| std::env::var(v).ok().map(|val| format!("{v}={val}")))
+        .collect();
+    (!named.is_empty()).then(|| named.join(", "))
+}
+
+/// A failure of the loader before any device is open: almost always a broken
+/// driver install (a manifest naming a missing or corrupt library), which the
+/// loader reports as out of memory or as a failed initialisation.
+pub fn loader_failure(what: &str, result: vk::Result) -> Error {
+    let check = match manifests_named() {
+        Some(m) => format!("check the driver manifests named by {m}"),
+        None => "check the driver manifests in /usr/share/vulkan/icd.d".to_string(),
+    };
+    Error::NoDevice(format!(
+        " (the Vulkan loader failed {what} with {result:?}, its answer to a driver it cannot \
+         load or a manifest it cannot read: {check})"
+    ))
 }
 
 /// Validation messages seen so far (errors and warnings).
@@ -106,7 +129,7 @@ impl Instance {
 
         // SAFETY: plain enumeration calls on a loaded entry.
         let layers = unsafe { entry.enumerate_instance_layer_properties() }
-            .ctx(|| "listing Vulkan instance layers".into())?;
+            .map_err(|r| loader_failure("listing instance layers", r))?;
         let have_layer = layers
             .iter()
             .any(|l| l.layer_name_as_c_str().is_ok_and(|n| n == VALIDATION_LAYER));
@@ -119,7 +142,7 @@ impl Instance {
 
         // SAFETY: as above.
         let extensions = unsafe { entry.enumerate_instance_extension_properties(None) }
-            .ctx(|| "listing Vulkan instance extensions".into())?;
+            .map_err(|r| loader_failure("listing instance extensions", r))?;
         let has_ext = |name: &CStr| {
             extensions
                 .iter()
@@ -194,16 +217,23 @@ impl Instance {
             Ok(i) => i,
             // The loader says this when it finds no driver at all.
             Err(vk::Result::ERROR_INCOMPATIBLE_DRIVER) => {
-                return Err(Error::NoDevice(
-                    " (the Vulkan loader found no driver)".into(),
-                ));
+                return Err(Error::NoDevice(format!(
+                    " (the Vulkan loader found no driver it could load{})",
+                    manifests_named()
+                        .map(|m| format!("; {m} names the manifests"))
+                        .unwrap_or_default()
+                )));
             }
-            Err(result) => {
+            Err(
+                result @ (vk::Result::ERROR_LAYER_NOT_PRESENT
+                | vk::Result::ERROR_EXTENSION_NOT_PRESENT),
+            ) => {
                 return Err(Error::Vulkan {
                     what: "creating the Vulkan instance".into(),
                     result,
                 });
             }
+            Err(result) => return Err(loader_failure("creating the instance", result)),
         };
 
         let (debug_utils, messenger) = if have_debug_utils {

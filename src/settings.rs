@@ -1,0 +1,231 @@
+//! The `BLACKHOLE_*` environment settings, parsed once, in one place.
+//!
+//! Every setting the program reads from the environment is parsed here, the
+//! first time any of them is needed ([`get`]), and a value that does not
+//! parse is an error naming the variable and the value ([`init`], which the
+//! command line and [`crate::Renderer::new`] call first), never a silent
+//! default. A `BLACKHOLE_` variable the program does not know draws one
+//! warning (a typo would otherwise do nothing).
+
+use std::sync::OnceLock;
+use std::time::Duration;
+
+use crate::vk::fault::{self, Fault};
+use crate::{Error, Result};
+
+/// What the environment asks for.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Settings {
+    /// `BLACKHOLE_DEVICE`: part of the name of the device to use.
+    pub device: Option<String>,
+    /// `BLACKHOLE_VALIDATION`: `Some(true)` requires the validation layer,
+    /// `Some(false)` turns it off, `None` leaves the build's default.
+    pub validation: Option<bool>,
+    /// `BLACKHOLE_GPU_TIMEOUT_S`: the longest wait for one submission.
+    pub gpu_timeout: Duration,
+    /// `BLACKHOLE_NO_SPLIT`: keep the thin disk in the one ray-march dispatch.
+    pub no_split: bool,
+    /// `BLACKHOLE_NO_QUAD`: the ray march without quad subgroup operations.
+    pub no_quad: bool,
+    /// `BLACKHOLE_FAULT`: a failure injected for the tests.
+    pub fault: Option<Fault>,
+}
+
+/// The wait limit without `BLACKHOLE_GPU_TIMEOUT_S`: a 4K volumetric frame on
+/// a CPU driver takes seconds, not minutes.
+pub const DEFAULT_GPU_TIMEOUT_S: f64 = 600.0;
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            device: None,
+            validation: None,
+            gpu_timeout: Duration::from_secs_f64(DEFAULT_GPU_TIMEOUT_S),
+            no_split: false,
+            no_quad: false,
+            fault: None,
+        }
+    }
+}
+
+/// Every variable read, with what it takes (for messages and the README).
+pub const KNOWN: &[(&str, &str)] = &[
+    ("BLACKHOLE_DEVICE", "part of a device's name"),
+    (
+        "BLACKHOLE_VALIDATION",
+        "1 or 0 (also true/false, on/off, yes/no)",
+    ),
+    (
+        "BLACKHOLE_GPU_TIMEOUT_S",
+        "a number of seconds > 0, e.g. 600",
+    ),
+    ("BLACKHOLE_NO_SPLIT", "1 or 0"),
+    ("BLACKHOLE_NO_QUAD", "1 or 0"),
+    (
+        "BLACKHOLE_FAULT",
+        "device-lost, out-of-device-memory or alloc:<resource name>",
+    ),
+    // Read by the golden-image tests, not by the program.
+    ("BLACKHOLE_BLESS", "1 (tests only)"),
+];
+
+fn bad(name: &str, value: &str) -> Error {
+    let wants = KNOWN
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map_or("", |(_, w)| *w);
+    let shown: String = value.chars().take(60).collect();
+    Error::Usage(format!(
+        "environment: {name}={shown:?} is not a valid value; it takes {wants}"
+    ))
+}
+
+fn switch(name: &str, value: &str) -> Result<bool> {
+    match value.trim().to_ascii_lowercase().as_str() {
+        "1" | "true" | "on" | "yes" => Ok(true),
+        "0" | "false" | "off" | "no" | "" => Ok(false),
+        _ => Err(bad(name, value)),
+    }
+}
+
+impl Settings {
+    /// Parses `BLACKHOLE_*` pairs (the environment, or a test's list). The
+    /// second item holds the names of unknown variables, to warn about.
+    pub fn parse<I, K, V>(vars: I) -> Result<(Self, Vec<String>)>
+    where
+        I: IntoIterator<Item = (K, V)>,
+        K: AsRef<str>,
+        V: AsRef<str>,
+    {
+        let mut s = Settings::default();
+        let mut unknown = Vec::new();
+        for (k, v) in vars {
+            let (name, value) = (k.as_ref(), v.as_ref());
+            match name {
+                "BLACKHOLE_DEVICE" => {
+                    s.device = Some(value.to_string()).filter(|d| !d.trim().is_empty());
+                }
+                "BLACKHOLE_VALIDATION" => {
+                    s.validation = (!value.trim().is_empty())
+                        .then(|| switch(name, value))
+                        .transpose()?;
+                }
+                "BLACKHOLE_GPU_TIMEOUT_S" => {
+                    let secs = value
+                        .trim()
+                        .parse::<f64>()
+                        .ok()
+                        .filter(|s| s.is_finite() && *s > 0.0 && *s <= 1e7)
+                        .ok_or_else(|| bad(name, value))?;
+                    s.gpu_timeout = Duration::from_secs_f64(secs);
+                }
+                "BLACKHOLE_NO_SPLIT" => s.no_split = switch(name, value)?,
+                "BLACKHOLE_NO_QUAD" => s.no_quad = switch(name, value)?,
+                "BLACKHOLE_FAULT" => {
+                    s.fault = Some(fault::parse(value).ok_or_else(|| bad(name, value))?);
+                }
+                "BLACKHOLE_BLESS" => {}
+                other if other.starts_with("BLACKHOLE_") => unknown.push(other.to_string()),
+                _ => {}
+            }
+        }
+        Ok((s, unknown))
+    }
+
+    /// Parses the process's environment.
+    pub fn from_env() -> Result<(Self, Vec<String>)> {
+        Self::parse(std::env::vars_os().filter_map(|(k, v)| {
+            let k = k.into_string().ok()?;
+            k.starts_with("BLACKHOLE_")
+                .then(|| (k, v.to_string_lossy().into_owned()))
+        }))
+    }
+}
+
+static SETTINGS: OnceLock<std::result::Result<Settings, String>> = OnceLock::new();
+
+fn parsed() -> &'static std::result::Result<Settings, String> {
+    SETTINGS.get_or_init(|| match Settings::from_env() {
+        Ok((s, unknown)) => {
+            for name in unknown {
+                let names: Vec<&str> = KNOWN.iter().map(|k| k.0).collect();
+                log::warn!(
+                    "environment: {name} is not a setting of this program (ignored; known: {})",
+                    names.join(", ")
+                );
+            }
+            Ok(s)
+        }
+        Err(e) => Err(e.to_string()),
+    })
+}
+
+/// Parses the environment (once) and reports a bad value as a usage error.
+pub fn init() -> Result<&'static Settings> {
+    parsed().as_ref().map_err(|e| Error::Usage(e.clone()))
+}
+
+/// The settings; defaults if the environment did not parse (the error has
+/// been, or will be, reported by [`init`], which every entry point calls).
+pub fn get() -> &'static Settings {
+    static DEFAULT: OnceLock<Settings> = OnceLock::new();
+    match parsed() {
+        Ok(s) => s,
+        Err(_) => DEFAULT.get_or_init(Settings::default),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn one(name: &str, value: &str) -> Result<Settings> {
+        Settings::parse([(name, value)]).map(|(s, _)| s)
+    }
+
+    #[test]
+    fn bad_values_are_errors_naming_the_variable() {
+        for (name, value) in [
+            ("BLACKHOLE_GPU_TIMEOUT_S", "1ms"),
+            ("BLACKHOLE_GPU_TIMEOUT_S", "0"),
+            ("BLACKHOLE_GPU_TIMEOUT_S", "nan"),
+            ("BLACKHOLE_VALIDATION", "maybe"),
+            ("BLACKHOLE_NO_SPLIT", "please"),
+            ("BLACKHOLE_FAULT", "melt"),
+        ] {
+            let e = one(name, value).unwrap_err().to_string();
+            assert!(e.contains(name) && e.contains(value), "{e}");
+            assert_eq!(Error::Usage(String::new()).exit_code(), 2);
+        }
+    }
+
+    #[test]
+    fn good_values_parse() {
+        assert_eq!(
+            one("BLACKHOLE_GPU_TIMEOUT_S", "2.5").unwrap().gpu_timeout,
+            Duration::from_millis(2500)
+        );
+        assert_eq!(
+            one("BLACKHOLE_VALIDATION", "yes").unwrap().validation,
+            Some(true)
+        );
+        assert_eq!(
+            one("BLACKHOLE_VALIDATION", "0").unwrap().validation,
+            Some(false)
+        );
+        assert_eq!(one("BLACKHOLE_VALIDATION", "").unwrap().validation, None);
+        assert!(one("BLACKHOLE_NO_SPLIT", "1").unwrap().no_split);
+        assert!(!one("BLACKHOLE_NO_QUAD", "0").unwrap().no_quad);
+        assert_eq!(
+            one("BLACKHOLE_DEVICE", "llvm").unwrap().device.as_deref(),
+            Some("llvm")
+        );
+    }
+
+    #[test]
+    fn unknown_names_are_listed_for_a_warning() {
+        let (_, unknown) =
+            Settings::parse([("BLACKHOLE_VALIDATON", "1"), ("HOME", "/root")]).unwrap();
+        assert_eq!(unknown, ["BLACKHOLE_VALIDATON"]);
+    }
+}
