@@ -228,9 +228,10 @@ fn load_cubemap_within(paths: &[impl AsRef<Path>], max_face: u32) -> Result<SkyT
         )));
     }
     let mut faces: Vec<(u32, u32, Vec<[f32; 4]>)> = Vec::with_capacity(6);
+    let mut side = None;
     for p in paths {
         let (w, h, mut t) = load_linear(p.as_ref())?;
-        if w != h || faces.first().is_some_and(|(fw, _, _)| *fw != w) {
+        if w != h || *side.get_or_insert(w) != w {
             return Err(Error::Scene(format!(
                 "cube map face {} is {w}x{h}: faces must be square and all the same size",
                 p.as_ref().display()

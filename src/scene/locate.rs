@@ -139,20 +139,29 @@ pub fn odd_name_hint(msg: &str, line: Option<&str>, known: &[String]) -> Option<
         return None;
     }
     let len = name.chars().count();
+    // A guess only where most of the name is plain: the odd characters are
+    // look-alikes in a word, not a word of another script.
     let resembles = |known: &str| {
-        known.chars().count() == len
+        2 * odd.len() <= len
+            && known.chars().count() == len
             && known
                 .chars()
                 .zip(name.chars())
                 .all(|(k, n)| k == n || !n.is_ascii_graphic())
     };
+    // The message stays one short line: three characters at most.
+    let shown = if odd.len() > 3 {
+        format!("{} and {} more", odd[..3].join(", "), odd.len() - 3)
+    } else {
+        odd.join(", ")
+    };
     let guess = expected
         .into_iter()
         .find(|k| resembles(k))
         .or_else(|| known.iter().map(String::as_str).find(|k| resembles(k)));
+    let name: String = name.chars().take(24).collect();
     Some(format!(
-        "; `{name}` holds {}, not plain ASCII{}",
-        odd.join(", "),
+        "; `{name}` holds {shown}, not plain ASCII{}",
         guess
             .map(|g| format!(": did you mean `{g}`?"))
             .unwrap_or_default()
