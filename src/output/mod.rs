@@ -196,6 +196,23 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_second_signal_during_a_write_removes_the_temporary() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let path = dir.path().join("f.png");
+        let mut seen = None;
+        // What the signal handler does while the file is being written.
+        let result = write_atomically(&path, |tmp| {
+            std::fs::write(tmp, b"half a frame").expect("writing");
+            seen = Some(tmp.to_path_buf());
+            remove_current_temp();
+            Ok(())
+        });
+        assert!(result.is_err(), "the vanished temporary is not renamed");
+        assert!(!seen.expect("a temporary was used").exists());
+        assert!(!path.exists());
+    }
+
+    #[test]
     fn temporaries_are_recognised_by_name() {
         assert!(is_temp_of(".f_0003.png.4242.tmp", "f_0003.png"));
         assert!(!is_temp_of(".f_0003.png.tmp", "f_0003.png"));

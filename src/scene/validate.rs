@@ -6,7 +6,7 @@ use glam::DVec3;
 use super::locate::Seg::{self, Idx, Key};
 use super::locate::display_path;
 use super::{Camera, CameraPath, DiskKind, MAX_HOLES, Scene, SkyKind};
-use crate::physics::observer::{ObserverKind, reference_hole};
+use crate::physics::observer::ObserverKind;
 
 /// A rejected value: its key path, the value as written, and the reason.
 pub type Invalid = (Vec<Seg>, String, String);
@@ -141,88 +141,87 @@ impl Scene {
     /// `[[animation.keyframe]]` (`at` is then its key path) or any frame of
     /// an animation ([`Scene::check_frames`]).
     pub(super) fn check_camera(&self, c: &Camera, at: &[Seg]) -> Check {
+        // Called for every frame of a sequence: the messages (and their
+        // key paths) are built only on failure.
         let key = |k: &'static str| [at, &[Key(k)]].concat();
         let is_camera = at == [Key("camera")];
-        finite3(&key("position"), &c.position)?;
-        finite3(&key("look_at"), &c.look_at)?;
-        finite3(&[Key("camera"), Key("up")], &c.up)?;
-        rule(
-            c.vfov_deg > 0.0 && c.vfov_deg < 180.0,
-            &key("vfov_deg"),
-            c.vfov_deg,
-            "must be in (0, 180) degrees",
-        )?;
+        let in_range = |v: &[f64; 3]| v.iter().all(|x| x.in_range());
+        if !in_range(&c.position) {
+            finite3(&key("position"), &c.position)?;
+        }
+        if !in_range(&c.look_at) {
+            finite3(&key("look_at"), &c.look_at)?;
+        }
+        if !in_range(&c.up) {
+            finite3(&[Key("camera"), Key("up")], &c.up)?;
+        }
+        if !(c.vfov_deg > 0.0 && c.vfov_deg < 180.0) {
+            return fail(&key("vfov_deg"), c.vfov_deg, "must be in (0, 180) degrees");
+        }
         let fwd = DVec3::from(c.look_at) - DVec3::from(c.position);
-        rule(
-            fwd.length() >= 1e-9,
-            &key("look_at"),
-            vec3(&c.look_at),
-            format!("must differ from {}", display_path(&key("position"))),
-        )?;
-        let parallel = DVec3::from(c.up).cross(fwd.normalize()).length() < 1e-6;
-        if is_camera {
-            rule(
-                !parallel,
-                &key("up"),
-                vec3(&c.up),
-                "must not be zero or parallel to the view direction",
-            )?;
-        } else {
-            rule(
-                !parallel,
-                &key("look_at"),
-                vec3(&c.look_at),
-                format!(
+        if fwd.length() < 1e-9 {
+            let why = format!("must differ from {}", display_path(&key("position")));
+            return fail(&key("look_at"), vec3(&c.look_at), why);
+        }
+        if DVec3::from(c.up).cross(fwd.normalize()).length() < 1e-6 {
+            return if is_camera {
+                fail(
+                    &key("up"),
+                    vec3(&c.up),
+                    "must not be zero or parallel to the view direction",
+                )
+            } else {
+                let why = format!(
                     "makes the view direction parallel to camera.up = {}",
                     vec3(&c.up)
-                ),
-            )?;
+                );
+                fail(&key("look_at"), vec3(&c.look_at), why)
+            };
         }
         let cam = DVec3::from(c.position);
+        let mut nearest: Option<(DVec3, f64, f64)> = None;
         for (i, h) in self.black_holes.iter().enumerate() {
-            rule(
-                (cam - DVec3::from(h.position)).length() > h.rs,
-                &key("position"),
-                vec3(&c.position),
-                format!("is inside the horizon of black_hole[{i}]"),
-            )?;
+            let rel = cam - DVec3::from(h.position);
+            let r = rel.length();
+            if r <= h.rs {
+                let why = format!("is inside the horizon of black_hole[{i}]");
+                return fail(&key("position"), vec3(&c.position), why);
+            }
+            if nearest.is_none_or(|(_, best, _)| r < best) {
+                nearest = Some((rel, r, h.rs));
+            }
         }
-        let holes = self.physics_holes();
-        let Some(h) = reference_hole(&holes, cam) else {
+        let Some((rel, r, rs)) = nearest else {
             return Ok(());
         };
-        let rel = cam - h.position;
         match c.observer {
             ObserverKind::Orbiting => {
-                rule(
-                    rel.length() > 1.5 * h.rs,
-                    &key("position"),
-                    vec3(&c.position),
-                    format!(
-                        "is inside the photon sphere (r = {:.4} <= 1.5 rs = {}), where no \
+                if r <= 1.5 * rs {
+                    let why = format!(
+                        "is inside the photon sphere (r = {r:.4} <= 1.5 rs = {}), where no \
                          \"orbiting\" observer can be",
-                        rel.length(),
-                        1.5 * h.rs
-                    ),
-                )?;
+                        1.5 * rs
+                    );
+                    return fail(&key("position"), vec3(&c.position), why);
+                }
                 let axis = DVec3::from(self.disk.normal).normalize_or_zero();
-                rule(
-                    axis == DVec3::ZERO || axis.cross(rel.normalize()).length() > 1e-6,
-                    &key("position"),
-                    vec3(&c.position),
-                    "is on the disk's axis, where an \"orbiting\" observer's orbit has no direction",
-                )
+                if axis != DVec3::ZERO && axis.cross(rel / r).length() <= 1e-6 {
+                    return fail(
+                        &key("position"),
+                        vec3(&c.position),
+                        "is on the disk's axis, where an \"orbiting\" observer's orbit has no direction",
+                    );
+                }
+                Ok(())
             }
-            ObserverKind::Falling if self.physics.gravity => rule(
-                rel.length() >= FALLING_MIN_R * h.rs,
-                &key("position"),
-                vec3(&c.position),
-                format!(
+            ObserverKind::Falling if self.physics.gravity && r < FALLING_MIN_R * rs => {
+                let why = format!(
                     "is {:.3e} rs from the horizon; a \"falling\" observer must stay at r >= {FALLING_MIN_R} rs \
                      (closer, its speed is within 32-bit rounding of light's)",
-                    rel.length() / h.rs - 1.0
-                ),
-            ),
+                    r / rs - 1.0
+                );
+                fail(&key("position"), vec3(&c.position), why)
+            }
             _ => Ok(()),
         }
     }
