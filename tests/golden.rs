@@ -69,16 +69,25 @@ fn worst_window(a: &image::RgbImage, b: &image::RgbImage) -> (f64, (u32, u32)) {
     worst
 }
 
-/// Whether this machine's device is the one the goldens were blessed on.
+/// Whether this machine's device renders as the goldens were blessed:
+/// lavapipe (llvmpipe) with ray differentials; why not, if not.
 fn blessed_device() -> Result<(), String> {
     let r = blackhole::Renderer::new(blackhole::RendererOptions::default())
         .map_err(|e| e.to_string())?;
     let name = r.device_name().to_string();
+    let differentials = r.features().ray_differentials;
     drop(r);
-    if name.contains("llvmpipe") {
-        Ok(())
+    if !name.contains("llvmpipe") {
+        Err(format!(
+            "the goldens were blessed on lavapipe (llvmpipe); this device is {name}"
+        ))
+    } else if !differentials {
+        Err(
+            "the goldens were blessed with ray differentials, off here (BLACKHOLE_NO_QUAD=1)"
+                .into(),
+        )
     } else {
-        Err(name)
+        Ok(())
     }
 }
 
@@ -92,9 +101,15 @@ fn golden_dir() -> PathBuf {
 fn presets_match_their_golden_images() {
     let dir = scratch();
     let bless = std::env::var("BLACKHOLE_BLESS").is_ok_and(|v| v == "1");
-    if let Err(device) = blessed_device() {
-        println!(
-            "SKIPPED: the goldens were blessed on lavapipe (llvmpipe); this device is {device}"
+    if let Err(why) = blessed_device() {
+        let names: Vec<&str> = blackhole::scene::PRESETS
+            .iter()
+            .map(|p| p.0)
+            .chain(["stars"])
+            .collect();
+        common::skipped(
+            &format!("presets_match_their_golden_images ({})", names.join(", ")),
+            &why,
         );
         return;
     }

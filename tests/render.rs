@@ -580,6 +580,14 @@ fn a_lost_device_or_exhausted_memory_is_one_error_line_not_a_crash() {
 /// dispatch), shades one twice, or composes the disk over the wrong light.
 #[test]
 fn the_split_disk_pass_draws_what_the_single_dispatch_draws() {
+    if !common::renderer().features().disk_split {
+        common::skipped(
+            "the_split_disk_pass_draws_what_the_single_dispatch_draws",
+            "this device does not split the ray march (only a CPU device with subgroup quads \
+             and ballots does, and not under BLACKHOLE_NO_SPLIT=1 or BLACKHOLE_NO_QUAD=1)",
+        );
+        return;
+    }
     let dir = scratch();
     let scenes = [
         (

@@ -197,7 +197,7 @@ impl App {
             self.options.present,
             FRAMES_IN_FLIGHT,
         )?;
-        let renderer = Renderer::with_gpu(gpu.clone())?;
+        let renderer = Renderer::with_gpu(gpu.clone(), crate::RendererOptions::default())?;
         let scene = self.options.scene.clone();
         let gui = Gui::new(&gpu, &window, swapchain.format, FRAMES_IN_FLIGHT, &scene)?;
         log::info!(

@@ -38,6 +38,8 @@ pub struct Pipelines {
     /// Ray-march pipelines by variant, built the first time a scene needs one.
     raymarch: VariantCache<raymarch::Variant>,
     gpu: Arc<Gpu>,
+    /// What the renderer does on this device.
+    features: crate::render::Features,
     /// Composite pipelines by variant, built on first use.
     composite: VariantCache<composite::Variant>,
     pub bloom_prefilter: ComputePipeline,
@@ -55,10 +57,11 @@ pub struct Pipelines {
 
 impl Pipelines {
     /// Builds every pipeline from the embedded SPIR-V.
-    pub fn new(gpu: &Arc<Gpu>) -> Result<Self> {
+    pub fn new(gpu: &Arc<Gpu>, features: crate::render::Features) -> Result<Self> {
         Ok(Pipelines {
             raymarch: VariantCache::new(),
             gpu: gpu.clone(),
+            features,
             composite: VariantCache::new(),
             bloom_prefilter: ComputePipeline::new(
                 gpu,
@@ -147,7 +150,7 @@ impl Pipelines {
                 RAYMARCH_AOV
             } else if variant.disk_stage != raymarch::glsl::DISK_STAGE_ALL {
                 RAYMARCH_SPLIT
-            } else if self.gpu.info.quad_compute {
+            } else if self.features.ray_differentials {
                 RAYMARCH
             } else {
                 RAYMARCH_NO_QUAD
@@ -163,10 +166,9 @@ impl Pipelines {
         })
     }
 
-    /// Whether this device runs the thin disk's split ray march
-    /// (`DeviceInfo::disk_split`).
-    pub fn can_split(&self) -> bool {
-        self.gpu.info.disk_split
+    /// What the renderer does on this device.
+    pub fn features(&self) -> crate::render::Features {
+        self.features
     }
 
     /// The ray-march pipelines one frame of `variant` runs on this device
@@ -176,7 +178,7 @@ impl Pipelines {
         variant: raymarch::Variant,
         split: bool,
     ) -> Vec<raymarch::Variant> {
-        variant.stages(split && self.gpu.info.disk_split)
+        variant.stages(split && self.features.disk_split)
     }
 
     /// The composite specialised for its output, tone map, bloom and

@@ -270,8 +270,8 @@ pub const SPLIT_MAX_DISK_SHARE: f64 = 0.3;
 /// Whether splitting the thin disk off into its own pass pays for this
 /// frame: the share of a 16 x 9 grid of the frame's rays, traced in closed
 /// form on the CPU (about 0.1 ms), that cross the disk's annulus is below
-/// [`SPLIT_MAX_DISK_SHARE`]. (The device must also support the split:
-/// `DeviceInfo::disk_split`.)
+/// [`SPLIT_MAX_DISK_SHARE`]. (Asked only through
+/// [`crate::render::Features::splits`], where the device splits at all.)
 pub fn split_pays(scene: &Scene, width: u32, height: u32) -> bool {
     let holes = scene.physics_holes();
     let (Some(hole), DiskKind::Thin) = (holes.first(), scene.disk.kind) else {

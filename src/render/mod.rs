@@ -3,6 +3,7 @@
 //! ([`recipe::add_frame`]) and runs it, offscreen (read back to the host) or
 //! onto a swapchain image (the window).
 
+pub mod features;
 pub mod noise;
 pub mod recipe;
 pub mod resources;
@@ -13,6 +14,7 @@ use std::sync::Arc;
 use ash::vk;
 use gpu_allocator::MemoryLocation;
 
+pub use features::Features;
 pub use recipe::{Accumulation, FrameOutput, HdrSource, PostSettings, add_frame};
 pub use slots::{FRAMES_IN_FLIGHT, FrameSlot};
 
@@ -24,16 +26,26 @@ use crate::vk::{Access, Buffer, BufferBinding, Gpu, Image, ImageBinding, ImageDe
 use crate::{Error, Result};
 use resources::SceneResources;
 
-/// Options for creating a [`Renderer`].
+/// Options for creating a [`Renderer`]; the defaults come from the
+/// environment ([`crate::settings`]).
 #[derive(Clone, Copy, Debug)]
 pub struct RendererOptions {
     pub validation: Validation,
+    /// Use ray differentials where the device can (`BLACKHOLE_NO_QUAD=1`
+    /// turns them off, for comparisons).
+    pub ray_differentials: bool,
+    /// Split the thin disk's ray march where the device and the frame
+    /// gain by it (`BLACKHOLE_NO_SPLIT=1` keeps the one dispatch).
+    pub disk_split: bool,
 }
 
 impl Default for RendererOptions {
     fn default() -> Self {
+        let settings = crate::settings::get();
         RendererOptions {
             validation: Validation::from_env(),
+            ray_differentials: !settings.no_quad,
+            disk_split: !settings.no_split,
         }
     }
 }
@@ -92,13 +104,15 @@ impl Renderer {
     pub fn new(options: RendererOptions) -> Result<Self> {
         crate::settings::init()?;
         let gpu = Gpu::new(options.validation)?;
-        Self::with_gpu(gpu)
+        Self::with_gpu(gpu, options)
     }
 
     /// Builds the renderer on a device opened by the caller (the window opens
     /// it with a surface in mind).
-    pub fn with_gpu(gpu: Arc<Gpu>) -> Result<Self> {
-        let pipelines = Pipelines::new(&gpu)?;
+    pub fn with_gpu(gpu: Arc<Gpu>, options: RendererOptions) -> Result<Self> {
+        let features = Features::decide(&gpu.info, &options);
+        log::debug!("features on {}: {features:?}", gpu.info.name);
+        let pipelines = Pipelines::new(&gpu, features)?;
         let resources = SceneResources::new(&gpu)?;
         let slots = (0..FRAMES_IN_FLIGHT)
             .map(|i| FrameSlot::new(&gpu, i))
@@ -128,6 +142,12 @@ impl Renderer {
                 Arc::strong_count(&gpu) - 1
             ))),
         }
+    }
+
+    /// What the renderer does on this device (ray differentials, the split
+    /// ray march); tests expect their pass lists and images from it.
+    pub fn features(&self) -> Features {
+        self.pipelines.features()
     }
 
     /// The device.

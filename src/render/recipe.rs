@@ -80,8 +80,7 @@ pub fn add_frame<'a>(
                 },
                 size,
                 variant: raymarch::Variant::of(scene, output == FrameOutput::Geodesic),
-                // (The estimate only where the device can split at all.)
-                split: pipelines.can_split() && raymarch::split_pays(scene, size.0, size.1),
+                split: pipelines.features().splits(scene, size.0, size.1),
             },
         ),
         HdrSource::Image(image) => image.clone(),

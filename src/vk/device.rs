@@ -29,13 +29,11 @@ pub struct DeviceInfo {
     pub timestamp_valid_bits: u32,
     pub max_push_constants: u32,
     /// Subgroup quad operations in compute shaders (the ray march's ray
-    /// differentials need them; without, stars keep the unlensed footprint).
+    /// differentials need them).
     pub quad_compute: bool,
-    /// A CPU device with quad and ballot operations in compute shaders: the
-    /// thin disk's ray march is split into a trace pass that lists the
-    /// disk's pixels and an indirect disk pass over them where the disk
-    /// fills little of the view (otherwise one dispatch does both).
-    pub disk_split: bool,
+    /// Subgroup ballot operations in compute shaders (the split ray march
+    /// lists the disk's pixels with them).
+    pub ballot_compute: bool,
 }
 
 /// The logical device and everything created with it once.
@@ -77,7 +75,7 @@ struct Candidate {
     timestamp_valid_bits: u32,
     props: vk::PhysicalDeviceProperties,
     quad_compute: bool,
-    disk_split: bool,
+    ballot_compute: bool,
     /// Why it cannot be used, if it cannot.
     unusable: Option<String>,
 }
@@ -219,7 +217,7 @@ impl Gpu {
                 timestamp_valid_bits: chosen.timestamp_valid_bits,
                 max_push_constants: chosen.props.limits.max_push_constants_size,
                 quad_compute: chosen.quad_compute,
-                disk_split: chosen.disk_split,
+                ballot_compute: chosen.ballot_compute,
             },
             push_descriptor,
             debug_utils,
@@ -269,26 +267,17 @@ impl Gpu {
             // SAFETY: as above; Vulkan 1.1 core (devices below 1.2 are refused).
             unsafe { inst.get_physical_device_properties2(pd, &mut props2) };
         }
-        // BLACKHOLE_NO_QUAD=1 takes the fall-back shader (for comparisons).
-        let quad_compute = !crate::settings::get().no_quad
-            && api >= vk::API_VERSION_1_1
-            && subgroup
-                .supported_stages
-                .contains(vk::ShaderStageFlags::COMPUTE)
-            && subgroup
-                .supported_operations
-                .contains(vk::SubgroupFeatureFlags::QUAD);
-        // The split thin-disk ray march's build also lists pixels with
-        // ballots. It is for CPU drivers, which run every branch for every
-        // pixel; a GPU already skips the disk's code in the SIMD groups
-        // that do not see it. BLACKHOLE_NO_SPLIT=1 keeps the one dispatch
-        // (for comparisons).
-        let disk_split = quad_compute
-            && props.device_type == vk::PhysicalDeviceType::CPU
-            && !crate::settings::get().no_split
-            && subgroup
-                .supported_operations
-                .contains(vk::SubgroupFeatureFlags::BALLOT);
+        // What the device can do; what the renderer makes of it is decided
+        // in render::features.
+        let compute_ops = |op| {
+            api >= vk::API_VERSION_1_1
+                && subgroup
+                    .supported_stages
+                    .contains(vk::ShaderStageFlags::COMPUTE)
+                && subgroup.supported_operations.contains(op)
+        };
+        let quad_compute = compute_ops(vk::SubgroupFeatureFlags::QUAD);
+        let ballot_compute = compute_ops(vk::SubgroupFeatureFlags::BALLOT);
         let unusable = if api < vk::API_VERSION_1_2 {
             Some("Vulkan 1.2 or newer is needed".to_string())
         } else if api < vk::API_VERSION_1_3 && !has(khr::synchronization2::NAME) {
@@ -318,7 +307,7 @@ impl Gpu {
                 .map_or(0, |f| f.timestamp_valid_bits),
             props,
             quad_compute,
-            disk_split,
+            ballot_compute,
             unusable,
         })
     }

@@ -102,8 +102,32 @@ pub fn render_png(
 pub fn renderer() -> blackhole::Renderer {
     blackhole::Renderer::new(blackhole::RendererOptions {
         validation: blackhole::vk::Validation::Required,
+        ..Default::default()
     })
     .expect("a Vulkan device with the validation layer (install mesa-vulkan-drivers and vulkan-validationlayers)")
+}
+
+/// The ray march's passes in a frame of `scene` at `width` x `height` on
+/// this renderer's device: split into a trace pass and a disk pass (after
+/// clearing the disk's work list) where the device and the frame gain by it
+/// (a CPU device), one dispatch otherwise.
+pub fn ray_march_passes(
+    r: &blackhole::Renderer,
+    scene: &blackhole::Scene,
+    width: u32,
+    height: u32,
+) -> Vec<&'static str> {
+    if r.features().splits(scene, width, height) {
+        vec!["disk list clear", "raymarch", "raymarch disk"]
+    } else {
+        vec!["raymarch"]
+    }
+}
+
+/// Prints why a test checked nothing on this device (a capability it
+/// lacks or a switch that turned it off); the test then returns.
+pub fn skipped(test: &str, why: &str) {
+    println!("SKIPPED {test}: {why}");
 }
 
 /// The 8-bit pixels of a frame (panics on a float frame).
