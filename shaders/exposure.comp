@@ -5,7 +5,9 @@
 // of the lit ones (the black shadow and empty sky would pull the mean down
 // without saying anything about the light), each weighted by its brightness,
 // and writes the exposure that brings the band's mean luminance to the key
-// value (mid grey, 0.18). The result goes to a one-float storage buffer: a
+// value (pc.key: passes/exposure.rs's KEY, 0.45; above mid grey, since the
+// band is weighted toward the bright pixels). The result goes to a one-float
+// storage buffer: a
 // uniform-address buffer load is one scalar load on a CPU driver, where a
 // texel fetch is a per-pixel gather.
 

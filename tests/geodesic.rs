@@ -394,7 +394,7 @@ fn two_holes_follow_the_f64_reference() {
 /// `cargo test --release --test geodesic -- --ignored --nocapture`; the
 /// milliseconds come from `blackhole profile` on the same scenes.
 #[test]
-#[ignore]
+#[ignore = "the README's accuracy table: minutes on lavapipe, run by hand with --ignored"]
 fn accuracy_versus_quality() {
     let mut f = compare("default", [0.0, 0.8, -15.0], "");
     println!(

@@ -482,14 +482,14 @@ fn colour_attachment_write_then_compute_read_then_fragment_read_chains_without_a
 }
 
 #[test]
-fn compute_write_of_a_buffer_then_uniform_read_makes_the_write_visible_to_uniform_reads() {
+fn compute_write_of_a_buffer_then_storage_read_makes_the_write_visible_to_the_read() {
     let mut g = Graph::new(8, 8);
     let mut buf = g.import_buffer("params", fake_buffer(), Access::Nothing, None);
     let mut out = exported(&mut g);
     g.add_pass("write")
         .write_buffer(&mut buf, Access::ComputeStorageWrite);
     g.add_pass("read")
-        .read_buffer(&buf, Access::ComputeUniformRead)
+        .read_buffer(&buf, Access::ComputeStorageRead)
         .write_buffer(&mut out, Access::ComputeStorageWrite);
     let c = g.compile().unwrap();
     assert_eq!(c.order, vec![0, 1]);
@@ -506,17 +506,17 @@ fn compute_write_of_a_buffer_then_uniform_read_makes_the_write_visible_to_unifor
     );
     assert_eq!(
         (b[0].dst_stage, b[0].dst_access),
-        (S::COMPUTE_SHADER, A::UNIFORM_READ)
+        (S::COMPUTE_SHADER, A::SHADER_STORAGE_READ)
     );
 }
 
 #[test]
-fn host_written_parameters_are_made_visible_to_the_uniform_read() {
+fn host_written_parameters_are_made_visible_to_the_storage_read() {
     let mut g = Graph::new(8, 8);
     let params = g.import_buffer("params", fake_buffer(), Access::HostWrite, None);
     let mut out = exported(&mut g);
     g.add_pass("read")
-        .read_buffer(&params, Access::ComputeUniformRead)
+        .read_buffer(&params, Access::ComputeStorageRead)
         .write_buffer(&mut out, Access::ComputeStorageWrite);
     let c = g.compile().unwrap();
     assert_sources_valid(&c);
@@ -527,7 +527,7 @@ fn host_written_parameters_are_made_visible_to_the_uniform_read() {
         .collect();
     assert_eq!(b.len(), 1);
     assert_eq!((b[0].src_stage, b[0].src_access), (S::HOST, A::HOST_WRITE));
-    assert_eq!(b[0].dst_access, A::UNIFORM_READ);
+    assert_eq!(b[0].dst_access, A::SHADER_STORAGE_READ);
 }
 
 #[test]

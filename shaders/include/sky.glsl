@@ -33,7 +33,7 @@ vec3 hash33(uvec3 v) {
     return vec3(v) * (1.0 / 4294967296.0);
 }
 
-// The checker on the celestial sphere (the first seed's look): squares in
+// The checker on the celestial sphere (lensing made plain): squares in
 // longitude and latitude, so lensing shows as bent lines.
 vec3 sky_checker(vec3 d) {
     float n = P.sky.y;
@@ -266,7 +266,7 @@ vec3 sky_image(vec3 d, float pixel_angle) {
     return textureLod(sky_tex, vec2(u, v), lod).rgb * P.sky.z;
 }
 
-// The first seed's grid plane behind the hole: a finite square of lines that
+// The grid plane behind the hole: a finite square of lines that
 // escaping rays reach along their final straight line (the path is straight
 // to well under a pixel out there), drawn over the sky.
 void grid_plane(vec3 p, vec3 d, float pixel_angle, inout vec3 color) {

@@ -1,4 +1,4 @@
-// The volumetric disk (the second seed's look, reworked): a slab of glowing
+// The volumetric disk (the film look): a slab of glowing
 // gas around the first hole whose density falls with height and radius, cut
 // into filaments by octaves of gradient noise that turn with the Keplerian
 // angular velocity of their radius (so the inner parts shear ahead of the

@@ -95,7 +95,7 @@ impl Orbit {
     }
 }
 
-/// The second seed's three views: front (just above the disk), top (down the
+/// The three preset views: front (just above the disk), top (down the
 /// axis) and a free three-quarter view, at the current distance.
 pub fn preset_view(which: u8, current: &Orbit) -> Orbit {
     let (azimuth, elevation) = match which {

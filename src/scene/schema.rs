@@ -250,7 +250,7 @@ impl Default for Sky {
     }
 }
 
-/// The first seed's grid plane behind the hole.
+/// A grid of lines on a square plane behind the hole, to show the lensing.
 #[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct GridPlane {

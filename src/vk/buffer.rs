@@ -1,4 +1,4 @@
-//! Buffers: uniform data written by the host, readback targets.
+//! Buffers: parameters written by the host, work lists, readback targets.
 
 use std::sync::Arc;
 

@@ -12,7 +12,6 @@ use crate::{Error, Result};
 pub enum Descriptor {
     StorageImage(vk::ImageView),
     SampledImage(vk::ImageView, vk::Sampler),
-    UniformBuffer(vk::Buffer),
     StorageBuffer(vk::Buffer),
 }
 
@@ -21,7 +20,6 @@ impl Descriptor {
         match self {
             Descriptor::StorageImage(_) => BindingKind::StorageImage,
             Descriptor::SampledImage(..) => BindingKind::SampledImage,
-            Descriptor::UniformBuffer(_) => BindingKind::UniformBuffer,
             Descriptor::StorageBuffer(_) => BindingKind::StorageBuffer,
         }
     }
@@ -60,13 +58,11 @@ pub fn bind_compute(
     let buffer_infos: Vec<[vk::DescriptorBufferInfo; 1]> = descriptors
         .iter()
         .map(|d| match *d {
-            Descriptor::UniformBuffer(b) | Descriptor::StorageBuffer(b) => {
-                [vk::DescriptorBufferInfo {
-                    buffer: b,
-                    offset: 0,
-                    range: vk::WHOLE_SIZE,
-                }]
-            }
+            Descriptor::StorageBuffer(b) => [vk::DescriptorBufferInfo {
+                buffer: b,
+                offset: 0,
+                range: vk::WHOLE_SIZE,
+            }],
             _ => [vk::DescriptorBufferInfo::default()],
         })
         .collect();
@@ -81,9 +77,7 @@ pub fn bind_compute(
                 Descriptor::StorageImage(_) | Descriptor::SampledImage(..) => {
                     w.image_info(&image_infos[i])
                 }
-                Descriptor::UniformBuffer(_) | Descriptor::StorageBuffer(_) => {
-                    w.buffer_info(&buffer_infos[i])
-                }
+                Descriptor::StorageBuffer(_) => w.buffer_info(&buffer_infos[i]),
             }
         })
         .collect();

@@ -13,7 +13,6 @@ use crate::{Error, Result};
 pub enum BindingKind {
     StorageImage,
     SampledImage,
-    UniformBuffer,
     StorageBuffer,
 }
 
@@ -22,7 +21,6 @@ impl BindingKind {
         match self {
             BindingKind::StorageImage => vk::DescriptorType::STORAGE_IMAGE,
             BindingKind::SampledImage => vk::DescriptorType::COMBINED_IMAGE_SAMPLER,
-            BindingKind::UniformBuffer => vk::DescriptorType::UNIFORM_BUFFER,
             BindingKind::StorageBuffer => vk::DescriptorType::STORAGE_BUFFER,
         }
     }

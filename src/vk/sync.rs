@@ -20,8 +20,6 @@ pub enum Access {
     ComputeStorageWrite,
     /// Storage read and write of the same subresource in one dispatch.
     ComputeStorageReadWrite,
-    /// Uniform buffer read in a compute shader.
-    ComputeUniformRead,
     /// Dispatch arguments read by `vkCmdDispatchIndirect` (buffers only).
     IndirectRead,
     /// Source of a copy or blit.
@@ -58,13 +56,12 @@ pub struct AccessInfo {
 
 impl Access {
     /// Every access kind, for exhaustive tests.
-    pub const ALL: [Access; 15] = [
+    pub const ALL: [Access; 14] = [
         Access::Nothing,
         Access::ComputeSampledRead,
         Access::ComputeStorageRead,
         Access::ComputeStorageWrite,
         Access::ComputeStorageReadWrite,
-        Access::ComputeUniformRead,
         Access::IndirectRead,
         Access::TransferRead,
         Access::TransferWrite,
@@ -101,7 +98,6 @@ impl Access {
                 L::GENERAL,
                 true,
             ),
-            Access::ComputeUniformRead => (S::COMPUTE_SHADER, A::UNIFORM_READ, L::UNDEFINED, false),
             Access::IndirectRead => (
                 S::DRAW_INDIRECT,
                 A::INDIRECT_COMMAND_READ,
@@ -166,7 +162,6 @@ impl Access {
             Access::TransferWrite => U::TRANSFER_DST,
             Access::ColorAttachmentWrite => U::COLOR_ATTACHMENT,
             Access::Nothing
-            | Access::ComputeUniformRead
             | Access::IndirectRead
             | Access::HostRead
             | Access::HostWrite
@@ -182,7 +177,6 @@ impl Access {
             Access::ComputeStorageRead
             | Access::ComputeStorageWrite
             | Access::ComputeStorageReadWrite => U::STORAGE_BUFFER,
-            Access::ComputeUniformRead => U::UNIFORM_BUFFER,
             Access::IndirectRead => U::INDIRECT_BUFFER,
             Access::TransferRead => U::TRANSFER_SRC,
             Access::TransferWrite => U::TRANSFER_DST,
@@ -192,7 +186,7 @@ impl Access {
 
     /// Whether this access is allowed on an image.
     pub fn valid_for_image(self) -> bool {
-        !matches!(self, Access::ComputeUniformRead | Access::IndirectRead)
+        !matches!(self, Access::IndirectRead)
     }
 
     /// Whether this access is allowed on a buffer.
