@@ -15,7 +15,7 @@ use ash::vk;
 use gpu_allocator::MemoryLocation;
 
 pub use features::Features;
-pub use recipe::{Accumulation, FrameOutput, HdrSource, PostSettings, add_frame};
+pub use recipe::{Accumulation, HdrSource, PostSettings, add_frame};
 pub use slots::{FRAMES_IN_FLIGHT, FrameSlot};
 
 use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
@@ -280,48 +280,25 @@ impl Renderer {
             ));
         }
         self.prepare_scene(scene)?;
-        // Offscreen frames are synchronous: always slot 0, once it is idle.
-        const SLOT: usize = 0;
-        self.slots[SLOT].wait()?;
+        self.slots[OFFSCREEN_SLOT].wait()?;
         let build = std::time::Instant::now();
-        self.write_params(SLOT, scene, (width, height), (0.0, 0.0))?;
-        let needed = u64::from(width) * u64::from(height) * kind.texel_bytes();
-        let gpu = self.gpu.clone();
-        let slot = &mut self.slots[SLOT];
-        let readback = slot.ensure_readback(&gpu, needed)?.binding();
-        let params = slot.params.binding();
-
-        let mut g = Graph::new(width, height);
-        let mut out_buf = g.import_buffer(
-            "readback",
-            readback,
-            Access::Nothing,
-            Some(Access::HostRead),
-        );
-        let output = match kind {
-            OutputKind::Ldr => FrameOutput::Ldr,
-            OutputKind::Hdr => FrameOutput::Hdr,
-            OutputKind::HdrPost => FrameOutput::HdrPost,
-            OutputKind::Geodesic => FrameOutput::Geodesic,
-        };
-        let result = add_scene_frame(
-            &mut g,
-            &self.pipelines,
-            &self.resources,
-            scene,
-            params,
-            (width, height),
-            output,
-            None,
-        );
-        copy::add_copy_to_buffer(&mut g, &result, &mut out_buf);
-        finish_offscreen(
-            &mut self.slots[SLOT],
-            &self.gpu,
-            g,
+        self.write_params(OFFSCREEN_SLOT, scene, (width, height), (0.0, 0.0))?;
+        self.offscreen(
             (width, height),
             kind,
             build,
+            |g, pipelines, resources, params| {
+                add_scene_frame(
+                    g,
+                    pipelines,
+                    resources,
+                    scene,
+                    params,
+                    (width, height),
+                    kind,
+                    None,
+                )
+            },
         )
     }
 
@@ -353,73 +330,123 @@ impl Renderer {
             post_scene.post.auto_exposure = false;
             post_scene.post.exposure_ev = 0.0;
             post_scene.post.saturation = 1.0;
-            (&post_scene, FrameOutput::HdrPost)
+            (&post_scene, OutputKind::HdrPost)
         } else {
-            (
-                scene,
-                match kind {
-                    OutputKind::HdrPost => FrameOutput::HdrPost,
-                    _ => FrameOutput::Ldr,
-                },
-            )
+            (scene, kind)
         };
         self.ensure_mean((width, height))?;
-        const SLOT: usize = 0;
         let mut timings = FrameTimings::default();
         for i in 0..spp {
-            self.slots[SLOT].wait()?;
+            self.slots[OFFSCREEN_SLOT].wait()?;
             let build = std::time::Instant::now();
             let jitter = (
                 (halton(i + 1, 2) - 0.5) as f32,
                 (halton(i + 1, 3) - 0.5) as f32,
             );
-            self.write_params(SLOT, scene, (width, height), jitter)?;
-            let last = i + 1 == spp;
-            let mut g = Graph::new(width, height);
-            let mut mean = self
-                .import_mean(&mut g)
+            self.write_params(OFFSCREEN_SLOT, scene, (width, height), jitter)?;
+            let mean = self
+                .mean
+                .as_ref()
+                .map(|(img, state)| (img.desc, img.binding(), *state))
                 .ok_or_else(|| Error::Other("accumulation image missing".into()))?;
-            let result = add_scene_frame(
-                &mut g,
-                &self.pipelines,
-                &self.resources,
-                scene,
-                self.slots[SLOT].params.binding(),
-                (width, height),
-                if last { output } else { FrameOutput::Hdr },
-                Some(Accumulation {
-                    mean: &mut mean,
-                    index: i,
-                }),
-            );
             if let Some((_, state)) = self.mean.as_mut() {
                 *state = Access::ComputeSampledRead;
             }
-            if !last {
-                self.slots[SLOT].submit(&self.gpu, g, &[], &[])?;
-                if let Some(t) = self.slots[SLOT].wait()? {
+            if i + 1 < spp {
+                let mut g = Graph::new(width, height);
+                let params = self.slots[OFFSCREEN_SLOT].params.binding();
+                let sample = Sample {
+                    scene,
+                    size: (width, height),
+                    mean: mean.clone(),
+                    index: i,
+                };
+                sample.add(
+                    &mut g,
+                    &self.pipelines,
+                    &self.resources,
+                    params,
+                    OutputKind::Hdr,
+                );
+                self.slots[OFFSCREEN_SLOT].submit(&self.gpu, g, &[], &[])?;
+                if let Some(t) = self.slots[OFFSCREEN_SLOT].wait()? {
                     timings.add(&t);
                 }
                 continue;
             }
-            let needed = u64::from(width) * u64::from(height) * kind.texel_bytes();
-            let gpu = self.gpu.clone();
-            let slot = &mut self.slots[SLOT];
-            let readback = slot.ensure_readback(&gpu, needed)?.binding();
-            let mut out_buf = g.import_buffer(
-                "readback",
-                readback,
-                Access::Nothing,
-                Some(Access::HostRead),
-            );
-            copy::add_copy_to_buffer(&mut g, &result, &mut out_buf);
-            let mut frame = finish_offscreen(slot, &gpu, g, (width, height), kind, build)?;
+            let mut frame = self.offscreen(
+                (width, height),
+                kind,
+                build,
+                |g, pipelines, resources, params| {
+                    let sample = Sample {
+                        scene,
+                        size: (width, height),
+                        mean,
+                        index: i,
+                    };
+                    sample.add(g, pipelines, resources, params, output)
+                },
+            )?;
             timings.add(&frame.timings);
             timings.cpu = frame.timings.cpu;
             frame.timings = timings;
             return Ok(frame);
         }
         Err(Error::Other("no samples rendered".into()))
+    }
+
+    /// The one offscreen path: on the offscreen slot (idle, its parameters
+    /// written), `build` adds a frame to a new graph and returns the image to
+    /// read back; it is copied into the slot's readback buffer, submitted,
+    /// waited for and decoded as `kind`.
+    fn offscreen<F>(
+        &mut self,
+        (width, height): (u32, u32),
+        kind: OutputKind,
+        build_start: std::time::Instant,
+        build: F,
+    ) -> Result<Frame>
+    where
+        F: for<'a> FnOnce(
+            &mut Graph<'a>,
+            &'a Pipelines,
+            &SceneResources,
+            BufferBinding,
+        ) -> ImageHandle,
+    {
+        let needed = u64::from(width) * u64::from(height) * kind.texel_bytes();
+        let gpu = self.gpu.clone();
+        let slot = &mut self.slots[OFFSCREEN_SLOT];
+        let readback = slot.ensure_readback(&gpu, needed)?.binding();
+        let params = slot.params.binding();
+        let mut g = Graph::new(width, height);
+        let mut out_buf = g.import_buffer(
+            "readback",
+            readback,
+            Access::Nothing,
+            Some(Access::HostRead),
+        );
+        let result = build(&mut g, &self.pipelines, &self.resources, params);
+        copy::add_copy_to_buffer(&mut g, &result, &mut out_buf);
+        let slot = &mut self.slots[OFFSCREEN_SLOT];
+        let build_ms = slots::ms_since(build_start);
+        slot.submit(&self.gpu, g, &[], &[])?;
+        let mut timings = slot.wait()?.unwrap_or_default();
+        timings.cpu.build_ms = build_ms;
+        let readback_start = std::time::Instant::now();
+        let readback = slot
+            .readback
+            .as_ref()
+            .ok_or_else(|| Error::Other("readback buffer missing".into()))?;
+        let pixels = Pixels::decode(kind, &readback.mapped()?[..needed as usize]);
+        timings.cpu.readback_ms = slots::ms_since(readback_start);
+        Ok(Frame {
+            width,
+            height,
+            pixels,
+            timings,
+        })
     }
 
     /// Makes sure the accumulation image matches `size` (a new one, after
@@ -444,20 +471,6 @@ impl Renderer {
             Access::Nothing,
         ));
         Ok(true)
-    }
-
-    /// Imports the accumulation image in its current state; the graph
-    /// leaves it ready to be sampled.
-    fn import_mean(&self, g: &mut Graph<'_>) -> Option<ImageHandle> {
-        self.mean.as_ref().map(|(img, state)| {
-            g.import_image(
-                "accumulated mean",
-                img.desc,
-                img.binding(),
-                *state,
-                Some(Access::ComputeSampledRead),
-            )
-        })
     }
 
     /// Runs the post-processing part of the recipe (bloom, exposure, tone
@@ -488,44 +501,27 @@ impl Renderer {
             MemoryLocation::CpuToGpu,
         )?;
         staging.mapped_mut()?.copy_from_slice(bytes);
-        const SLOT: usize = 0;
-        self.slots[SLOT].wait()?;
+        self.slots[OFFSCREEN_SLOT].wait()?;
         let build = std::time::Instant::now();
-        let needed = 4 * texels as u64;
-        let gpu = self.gpu.clone();
-        let readback = self.slots[SLOT].ensure_readback(&gpu, needed)?.binding();
-
-        let mut g = Graph::new(width, height);
-        let src = g.import_buffer(
-            "post input staging",
-            staging.binding(),
-            Access::HostWrite,
-            None,
-        );
-        let mut out_buf = g.import_buffer(
-            "readback",
-            readback,
-            Access::Nothing,
-            Some(Access::HostRead),
-        );
-        let mut input = g.create_relative("hdr input", vk::Format::R32G32B32A32_SFLOAT, 1, 1);
-        copy::add_upload(&mut g, &src, &mut input, 16);
-        let ldr = add_frame(
-            &mut g,
-            &self.pipelines,
-            HdrSource::Image(&input),
-            PostSettings { bloom, post },
-            FrameOutput::Ldr,
-            None,
-        );
-        copy::add_copy_to_buffer(&mut g, &ldr, &mut out_buf);
-        let frame = finish_offscreen(
-            &mut self.slots[SLOT],
-            &self.gpu,
-            g,
+        let staged = staging.binding();
+        let frame = self.offscreen(
             (width, height),
             OutputKind::Ldr,
             build,
+            |g, pipelines, _, _| {
+                let src = g.import_buffer("post input staging", staged, Access::HostWrite, None);
+                let mut input =
+                    g.create_relative("hdr input", vk::Format::R32G32B32A32_SFLOAT, 1, 1);
+                copy::add_upload(g, &src, &mut input, 16);
+                add_frame(
+                    g,
+                    pipelines,
+                    HdrSource::Image(&input),
+                    PostSettings { bloom, post },
+                    OutputKind::Ldr,
+                    None,
+                )
+            },
         );
         drop(staging);
         frame
@@ -567,9 +563,11 @@ impl Renderer {
 
         let (out_w, out_h) = (target.desc.width, target.desc.height);
         let mut g = Graph::new(out_w, out_h);
-        let mut mean_handle = match sample {
-            Some(_) => self.import_mean(&mut g),
-            None => None,
+        let mut mean_handle = match (sample, self.mean.as_ref()) {
+            (Some(_), Some((img, state))) => {
+                Some(import_mean(&mut g, (img.desc, img.binding(), *state)))
+            }
+            _ => None,
         };
         let accumulation = match (mean_handle.as_mut(), sample) {
             (Some(mean), Some(index)) => Some(Accumulation { mean, index }),
@@ -582,7 +580,7 @@ impl Renderer {
             scene,
             self.slots[slot_index].params.binding(),
             (w, h),
-            FrameOutput::Ldr,
+            OutputKind::Ldr,
             accumulation,
         );
         let mut swap = g.import_image(
@@ -649,33 +647,58 @@ impl Renderer {
     }
 }
 
-/// Submits an offscreen graph on `slot`, waits, and decodes the readback.
-fn finish_offscreen(
-    slot: &mut FrameSlot,
-    gpu: &Gpu,
-    g: Graph<'_>,
-    (width, height): (u32, u32),
-    kind: OutputKind,
-    build_start: std::time::Instant,
-) -> Result<Frame> {
-    let build_ms = slots::ms_since(build_start);
-    slot.submit(gpu, g, &[], &[])?;
-    let mut timings = slot.wait()?.unwrap_or_default();
-    timings.cpu.build_ms = build_ms;
-    let readback_start = std::time::Instant::now();
-    let readback = slot
-        .readback
-        .as_ref()
-        .ok_or_else(|| Error::Other("readback buffer missing".into()))?;
-    let needed = u64::from(width) * u64::from(height) * kind.texel_bytes();
-    let pixels = Pixels::decode(kind, &readback.mapped()?[..needed as usize]);
-    timings.cpu.readback_ms = slots::ms_since(readback_start);
-    Ok(Frame {
-        width,
-        height,
-        pixels,
-        timings,
-    })
+/// One jittered sample of [`Renderer::render_samples`], folded into the
+/// running mean.
+struct Sample<'s> {
+    scene: &'s Scene,
+    size: (u32, u32),
+    /// The accumulation image: description, binding, current state.
+    mean: (ImageDesc, ImageBinding, Access),
+    index: u32,
+}
+
+impl Sample<'_> {
+    fn add<'a>(
+        self,
+        g: &mut Graph<'a>,
+        pipelines: &'a Pipelines,
+        resources: &SceneResources,
+        params: BufferBinding,
+        output: OutputKind,
+    ) -> ImageHandle {
+        let mut mean = import_mean(g, self.mean);
+        add_scene_frame(
+            g,
+            pipelines,
+            resources,
+            self.scene,
+            params,
+            self.size,
+            output,
+            Some(Accumulation {
+                mean: &mut mean,
+                index: self.index,
+            }),
+        )
+    }
+}
+
+/// Offscreen frames are synchronous: always this slot, once it is idle.
+const OFFSCREEN_SLOT: usize = 0;
+
+/// Imports the accumulation image (its description, binding and current
+/// state); the graph leaves it ready to be sampled.
+fn import_mean(
+    g: &mut Graph<'_>,
+    (desc, binding, state): (ImageDesc, ImageBinding, Access),
+) -> ImageHandle {
+    g.import_image(
+        "accumulated mean",
+        desc,
+        binding,
+        state,
+        Some(Access::ComputeSampledRead),
+    )
 }
 
 /// Imports a slot's parameter block (written by the host) and the shared
@@ -687,7 +710,7 @@ fn add_scene_frame<'a>(
     scene: &Scene,
     params: BufferBinding,
     size: (u32, u32),
-    output: FrameOutput,
+    output: OutputKind,
     accumulation: Option<Accumulation<'_>>,
 ) -> ImageHandle {
     let params = g.import_buffer("raymarch params", params, Access::HostWrite, None);

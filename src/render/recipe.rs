@@ -5,6 +5,7 @@
 //! the result (a readback, a blit to the swapchain, a GUI on top) is added
 //! after it by the caller.
 
+use crate::frame::OutputKind;
 use crate::graph::{BufferHandle, Graph, ImageHandle};
 use crate::passes::{self, Pipelines, composite, raymarch};
 use crate::scene::{Bloom, Post, Scene};
@@ -21,19 +22,6 @@ pub enum HdrSource<'h> {
     },
     /// An image already in the graph (the post-processing API's upload).
     Image(&'h ImageHandle),
-}
-
-/// What the frame ends in.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum FrameOutput {
-    /// Bloom, exposure, tone map, sRGB and dither: 8-bit RGBA.
-    Ldr,
-    /// The ray march's linear radiance as it is (EXR output).
-    Hdr,
-    /// Bloom and exposure, still linear (`--exr-post`).
-    HdrPost,
-    /// The geodesic AOV instead of radiance.
-    Geodesic,
 }
 
 /// The progressive accumulation of a still view (window only).
@@ -58,7 +46,7 @@ pub fn add_frame<'a>(
     pipelines: &'a Pipelines,
     source: HdrSource<'_>,
     settings: PostSettings<'_>,
-    output: FrameOutput,
+    output: OutputKind,
     accumulation: Option<Accumulation<'_>>,
 ) -> ImageHandle {
     let hdr = match source {
@@ -73,19 +61,19 @@ pub fn add_frame<'a>(
             raymarch::RaymarchInputs {
                 params,
                 images,
-                output: if output == FrameOutput::Geodesic {
+                output: if output == OutputKind::Geodesic {
                     raymarch::RaymarchOutput::Geodesic
                 } else {
                     raymarch::RaymarchOutput::Beauty
                 },
                 size,
-                variant: raymarch::Variant::of(scene, output == FrameOutput::Geodesic),
+                variant: raymarch::Variant::of(scene, output == OutputKind::Geodesic),
                 split: pipelines.features().splits(scene, size.0, size.1),
             },
         ),
         HdrSource::Image(image) => image.clone(),
     };
-    if output == FrameOutput::Geodesic {
+    if output == OutputKind::Geodesic {
         return hdr;
     }
     let hdr = match accumulation {
@@ -95,7 +83,7 @@ pub fn add_frame<'a>(
         }
         None => hdr,
     };
-    if output == FrameOutput::Hdr {
+    if output == OutputKind::Hdr {
         // The ray march's radiance, or with accumulation the running mean.
         return hdr;
     }
@@ -111,6 +99,6 @@ pub fn add_frame<'a>(
         },
         settings.bloom,
         settings.post,
-        output == FrameOutput::HdrPost,
+        output == OutputKind::HdrPost,
     )
 }
