@@ -1,28 +1,31 @@
 //! The renderer: owns the device, the pipelines, the resources kept across
 //! frames and the frame slots; builds each frame with the one recipe
-//! ([`recipe::add_frame`]) and runs it, offscreen (read back to the host) or
-//! onto a swapchain image (the window).
+//! ([`recipe::add_frame`]) and runs it, offscreen (read back to the host:
+//! `offscreen.rs`, one readback path) or onto a swapchain image (the window:
+//! `window.rs`). What it does on the device is decided in `features.rs`.
 
 pub mod features;
 pub mod noise;
+mod offscreen;
 pub mod recipe;
 pub mod resources;
 pub mod slots;
+mod window;
 
 use std::sync::Arc;
 
 use ash::vk;
-use gpu_allocator::MemoryLocation;
 
 pub use features::Features;
 pub use recipe::{Accumulation, HdrSource, PostSettings, add_frame};
 pub use slots::{FRAMES_IN_FLIGHT, FrameSlot};
+pub use window::{Overlay, SwapchainTarget, ViewOptions};
 
-use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
+use crate::frame::OutputKind;
 use crate::graph::{Graph, ImageHandle};
-use crate::passes::{self, Pipelines, copy, raymarch};
-use crate::scene::{DiskKind, Scene, SkyKind};
-use crate::vk::{Access, Buffer, BufferBinding, Gpu, Image, ImageBinding, ImageDesc, Validation};
+use crate::passes::{self, Pipelines, raymarch};
+use crate::scene::{Scene, SkyKind};
+use crate::vk::{Access, BufferBinding, Gpu, Image, ImageBinding, ImageDesc, Validation};
 use crate::{Error, Result};
 use resources::SceneResources;
 
@@ -48,38 +51,6 @@ impl Default for RendererOptions {
             disk_split: !settings.no_split,
         }
     }
-}
-
-/// How the window wants one frame drawn.
-#[derive(Clone, Copy, Debug)]
-pub struct ViewOptions {
-    /// Size of the ray march (the window's size times the render scale).
-    pub render_size: (u32, u32),
-    /// Sub-pixel jitter of the ray march, in pixels (0, 0 = pixel centres).
-    pub jitter: (f32, f32),
-    /// Which sample of an unchanged view this frame is; `None` turns the
-    /// progressive accumulation off.
-    pub sample: Option<u32>,
-}
-
-/// Something drawn over the frame on the swapchain image (the GUI panel).
-pub trait Overlay {
-    /// Adds the overlay's passes; `target` is the swapchain image, holding
-    /// the frame already.
-    fn add_passes<'a>(&'a mut self, graph: &mut Graph<'a>, target: &mut ImageHandle);
-}
-
-/// A swapchain image to draw onto, with its semaphores.
-pub struct SwapchainTarget<'t> {
-    pub desc: ImageDesc,
-    pub binding: ImageBinding,
-    /// Signalled by the acquire; waited at [`Access::Acquired`]'s stages.
-    pub acquired: vk::Semaphore,
-    /// Signalled when the frame is done; presentation waits on it.
-    pub rendered: vk::Semaphore,
-    pub overlay: Option<&'t mut dyn Overlay>,
-    /// Also copy the finished image to the host ([`Renderer::take_capture`]).
-    pub capture: bool,
 }
 
 /// The renderer. Fields drop in declaration order: frame slots and per-view
@@ -264,191 +235,6 @@ impl Renderer {
         Ok(())
     }
 
-    /// Renders `scene` at `width` x `height` offscreen and reads the result
-    /// back (waits for it).
-    pub fn render(
-        &mut self,
-        scene: &Scene,
-        width: u32,
-        height: u32,
-        kind: OutputKind,
-    ) -> Result<Frame> {
-        self.check_size(width, height)?;
-        if kind == OutputKind::Geodesic && scene.disk.kind == DiskKind::Volumetric {
-            return Err(Error::Usage(
-                "--aov geodesic describes thin-disk hits; this scene's disk is volumetric".into(),
-            ));
-        }
-        self.prepare_scene(scene)?;
-        self.slots[OFFSCREEN_SLOT].wait()?;
-        let build = std::time::Instant::now();
-        self.write_params(OFFSCREEN_SLOT, scene, (width, height), (0.0, 0.0))?;
-        self.offscreen(
-            (width, height),
-            kind,
-            build,
-            |g, pipelines, resources, params| {
-                add_scene_frame(
-                    g,
-                    pipelines,
-                    resources,
-                    scene,
-                    params,
-                    (width, height),
-                    kind,
-                    None,
-                )
-            },
-        )
-    }
-
-    /// Renders `scene` with `spp` jittered samples per pixel (Halton (2, 3)
-    /// offsets, the same for every frame, so sequences are deterministic):
-    /// each sample's ray march is folded into a running mean, and bloom,
-    /// exposure and tone map run once on the mean. `spp` <= 1 is
-    /// [`Renderer::render`]; the geodesic AOV takes one sample (it describes
-    /// rays, not light).
-    pub fn render_samples(
-        &mut self,
-        scene: &Scene,
-        width: u32,
-        height: u32,
-        kind: OutputKind,
-        spp: u32,
-    ) -> Result<Frame> {
-        if spp <= 1 || kind == OutputKind::Geodesic {
-            return self.render(scene, width, height, kind);
-        }
-        self.check_size(width, height)?;
-        self.prepare_scene(scene)?;
-        // The plain EXR is the mean itself: the linear composite with
-        // nothing applied turns it into the same half floats.
-        let mut post_scene;
-        let (scene, output) = if kind == OutputKind::Hdr {
-            post_scene = scene.clone();
-            post_scene.bloom.strength = 0.0;
-            post_scene.post.auto_exposure = false;
-            post_scene.post.exposure_ev = 0.0;
-            post_scene.post.saturation = 1.0;
-            (&post_scene, OutputKind::HdrPost)
-        } else {
-            (scene, kind)
-        };
-        self.ensure_mean((width, height))?;
-        let mut timings = FrameTimings::default();
-        for i in 0..spp {
-            self.slots[OFFSCREEN_SLOT].wait()?;
-            let build = std::time::Instant::now();
-            let jitter = (
-                (halton(i + 1, 2) - 0.5) as f32,
-                (halton(i + 1, 3) - 0.5) as f32,
-            );
-            self.write_params(OFFSCREEN_SLOT, scene, (width, height), jitter)?;
-            let mean = self
-                .mean
-                .as_ref()
-                .map(|(img, state)| (img.desc, img.binding(), *state))
-                .ok_or_else(|| Error::Other("accumulation image missing".into()))?;
-            if let Some((_, state)) = self.mean.as_mut() {
-                *state = Access::ComputeSampledRead;
-            }
-            if i + 1 < spp {
-                let mut g = Graph::new(width, height);
-                let params = self.slots[OFFSCREEN_SLOT].params.binding();
-                let sample = Sample {
-                    scene,
-                    size: (width, height),
-                    mean: mean.clone(),
-                    index: i,
-                };
-                sample.add(
-                    &mut g,
-                    &self.pipelines,
-                    &self.resources,
-                    params,
-                    OutputKind::Hdr,
-                );
-                self.slots[OFFSCREEN_SLOT].submit(&self.gpu, g, &[], &[])?;
-                if let Some(t) = self.slots[OFFSCREEN_SLOT].wait()? {
-                    timings.add(&t);
-                }
-                continue;
-            }
-            let mut frame = self.offscreen(
-                (width, height),
-                kind,
-                build,
-                |g, pipelines, resources, params| {
-                    let sample = Sample {
-                        scene,
-                        size: (width, height),
-                        mean,
-                        index: i,
-                    };
-                    sample.add(g, pipelines, resources, params, output)
-                },
-            )?;
-            timings.add(&frame.timings);
-            timings.cpu = frame.timings.cpu;
-            frame.timings = timings;
-            return Ok(frame);
-        }
-        Err(Error::Other("no samples rendered".into()))
-    }
-
-    /// The one offscreen path: on the offscreen slot (idle, its parameters
-    /// written), `build` adds a frame to a new graph and returns the image to
-    /// read back; it is copied into the slot's readback buffer, submitted,
-    /// waited for and decoded as `kind`.
-    fn offscreen<F>(
-        &mut self,
-        (width, height): (u32, u32),
-        kind: OutputKind,
-        build_start: std::time::Instant,
-        build: F,
-    ) -> Result<Frame>
-    where
-        F: for<'a> FnOnce(
-            &mut Graph<'a>,
-            &'a Pipelines,
-            &SceneResources,
-            BufferBinding,
-        ) -> ImageHandle,
-    {
-        let needed = u64::from(width) * u64::from(height) * kind.texel_bytes();
-        let gpu = self.gpu.clone();
-        let slot = &mut self.slots[OFFSCREEN_SLOT];
-        let readback = slot.ensure_readback(&gpu, needed)?.binding();
-        let params = slot.params.binding();
-        let mut g = Graph::new(width, height);
-        let mut out_buf = g.import_buffer(
-            "readback",
-            readback,
-            Access::Nothing,
-            Some(Access::HostRead),
-        );
-        let result = build(&mut g, &self.pipelines, &self.resources, params);
-        copy::add_copy_to_buffer(&mut g, &result, &mut out_buf);
-        let slot = &mut self.slots[OFFSCREEN_SLOT];
-        let build_ms = slots::ms_since(build_start);
-        slot.submit(&self.gpu, g, &[], &[])?;
-        let mut timings = slot.wait()?.unwrap_or_default();
-        timings.cpu.build_ms = build_ms;
-        let readback_start = std::time::Instant::now();
-        let readback = slot
-            .readback
-            .as_ref()
-            .ok_or_else(|| Error::Other("readback buffer missing".into()))?;
-        let pixels = Pixels::decode(kind, &readback.mapped()?[..needed as usize]);
-        timings.cpu.readback_ms = slots::ms_since(readback_start);
-        Ok(Frame {
-            width,
-            height,
-            pixels,
-            timings,
-        })
-    }
-
     /// Makes sure the accumulation image matches `size` (a new one, after
     /// the GPU is idle, if not); true when it was made anew.
     fn ensure_mean(&mut self, (w, h): (u32, u32)) -> Result<bool> {
@@ -472,219 +258,7 @@ impl Renderer {
         ));
         Ok(true)
     }
-
-    /// Runs the post-processing part of the recipe (bloom, exposure, tone
-    /// map) on an HDR image given as RGBA f32 rows, row 0 at the top; returns
-    /// the 8-bit frame.
-    pub fn post_process(
-        &mut self,
-        hdr: &[f32],
-        width: u32,
-        height: u32,
-        bloom: &crate::scene::Bloom,
-        post: &crate::scene::Post,
-    ) -> Result<Frame> {
-        let texels = width as usize * height as usize;
-        if width == 0 || height == 0 || hdr.len() != 4 * texels {
-            return Err(Error::Usage(format!(
-                "post_process: {} floats do not make a {width}x{height} RGBA image",
-                hdr.len()
-            )));
-        }
-        self.check_size(width, height)?;
-        let bytes: &[u8] = bytemuck::cast_slice(hdr);
-        let mut staging = Buffer::new(
-            &self.gpu,
-            "post input staging",
-            bytes.len() as u64,
-            vk::BufferUsageFlags::TRANSFER_SRC,
-            MemoryLocation::CpuToGpu,
-        )?;
-        staging.mapped_mut()?.copy_from_slice(bytes);
-        self.slots[OFFSCREEN_SLOT].wait()?;
-        let build = std::time::Instant::now();
-        let staged = staging.binding();
-        let frame = self.offscreen(
-            (width, height),
-            OutputKind::Ldr,
-            build,
-            |g, pipelines, _, _| {
-                let src = g.import_buffer("post input staging", staged, Access::HostWrite, None);
-                let mut input =
-                    g.create_relative("hdr input", vk::Format::R32G32B32A32_SFLOAT, 1, 1);
-                copy::add_upload(g, &src, &mut input, 16);
-                add_frame(
-                    g,
-                    pipelines,
-                    HdrSource::Image(&input),
-                    PostSettings { bloom, post },
-                    OutputKind::Ldr,
-                    None,
-                )
-            },
-        );
-        drop(staging);
-        frame
-    }
-
-    /// Waits for the frame slot the next windowed frame will use (call it
-    /// before acquiring a swapchain image, so the slot's acquire semaphore is
-    /// free again); returns that slot's last frame's GPU timings.
-    pub fn begin_window_frame(&mut self) -> Result<Option<FrameTimings>> {
-        self.slots[self.next_slot].wait()
-    }
-
-    /// Draws `scene` onto a swapchain image (the window): the frame recipe at
-    /// `view.render_size`, a blit onto the image, then the overlay, in the
-    /// slot [`Renderer::begin_window_frame`] waited for. Does not wait for
-    /// the GPU.
-    pub fn draw_to_swapchain(
-        &mut self,
-        scene: &Scene,
-        view: ViewOptions,
-        target: SwapchainTarget<'_>,
-    ) -> Result<()> {
-        let (w, h) = view.render_size;
-        self.check_size(w, h)?;
-        self.check_size(target.desc.width, target.desc.height)?;
-        self.prepare_scene(scene)?;
-        let slot_index = self.next_slot;
-        self.next_slot = (self.next_slot + 1) % self.slots.len();
-        self.slots[slot_index].wait()?;
-        self.write_params(slot_index, scene, view.render_size, view.jitter)?;
-
-        // The running mean follows the render size; a new one starts over.
-        let mut sample = view.sample;
-        if let Some(s) = sample.as_mut()
-            && self.ensure_mean((w, h))?
-        {
-            *s = 0;
-        }
-
-        let (out_w, out_h) = (target.desc.width, target.desc.height);
-        let mut g = Graph::new(out_w, out_h);
-        let mut mean_handle = match (sample, self.mean.as_ref()) {
-            (Some(_), Some((img, state))) => {
-                Some(import_mean(&mut g, (img.desc, img.binding(), *state)))
-            }
-            _ => None,
-        };
-        let accumulation = match (mean_handle.as_mut(), sample) {
-            (Some(mean), Some(index)) => Some(Accumulation { mean, index }),
-            _ => None,
-        };
-        let ldr = add_scene_frame(
-            &mut g,
-            &self.pipelines,
-            &self.resources,
-            scene,
-            self.slots[slot_index].params.binding(),
-            (w, h),
-            OutputKind::Ldr,
-            accumulation,
-        );
-        let mut swap = g.import_image(
-            "swapchain",
-            target.desc,
-            target.binding,
-            Access::Acquired,
-            Some(Access::Present),
-        );
-        passes::present::add_blit_to(&mut g, &ldr, &mut swap);
-        if let Some(o) = target.overlay {
-            o.add_passes(&mut g, &mut swap);
-        }
-        if target.capture {
-            let needed = u64::from(out_w) * u64::from(out_h) * 4;
-            let gpu = self.gpu.clone();
-            let readback = self.slots[slot_index]
-                .ensure_readback(&gpu, needed)?
-                .binding();
-            let mut buf =
-                g.import_buffer("capture", readback, Access::Nothing, Some(Access::HostRead));
-            copy::add_copy_to_buffer(&mut g, &swap, &mut buf);
-            self.capture = Some((slot_index, out_w, out_h, target.desc.format));
-        }
-        let waits = [(target.acquired, Access::Acquired.info().stage)];
-        self.slots[slot_index].submit(&self.gpu, g, &waits, &[target.rendered])?;
-        if let Some((_, state)) = self.mean.as_mut() {
-            if sample.is_some() {
-                *state = Access::ComputeSampledRead;
-            }
-        }
-        Ok(())
-    }
 }
-
-impl Renderer {
-    /// The last frame drawn with `capture`, as 8-bit RGBA (waits for it).
-    pub fn take_capture(&mut self) -> Result<Frame> {
-        let (slot, width, height, format) = self
-            .capture
-            .take()
-            .ok_or_else(|| Error::Other("no frame was captured".into()))?;
-        self.wait_idle()?;
-        let readback = self.slots[slot]
-            .readback
-            .as_ref()
-            .ok_or_else(|| Error::Other("capture buffer missing".into()))?;
-        let needed = (u64::from(width) * u64::from(height) * 4) as usize;
-        let mut bytes = readback.mapped()?[..needed].to_vec();
-        if matches!(
-            format,
-            vk::Format::B8G8R8A8_UNORM | vk::Format::B8G8R8A8_SRGB
-        ) {
-            for px in bytes.chunks_exact_mut(4) {
-                px.swap(0, 2);
-            }
-        }
-        Ok(Frame {
-            width,
-            height,
-            pixels: Pixels::Rgba8(bytes),
-            timings: FrameTimings::default(),
-        })
-    }
-}
-
-/// One jittered sample of [`Renderer::render_samples`], folded into the
-/// running mean.
-struct Sample<'s> {
-    scene: &'s Scene,
-    size: (u32, u32),
-    /// The accumulation image: description, binding, current state.
-    mean: (ImageDesc, ImageBinding, Access),
-    index: u32,
-}
-
-impl Sample<'_> {
-    fn add<'a>(
-        self,
-        g: &mut Graph<'a>,
-        pipelines: &'a Pipelines,
-        resources: &SceneResources,
-        params: BufferBinding,
-        output: OutputKind,
-    ) -> ImageHandle {
-        let mut mean = import_mean(g, self.mean);
-        add_scene_frame(
-            g,
-            pipelines,
-            resources,
-            self.scene,
-            params,
-            self.size,
-            output,
-            Some(Accumulation {
-                mean: &mut mean,
-                index: self.index,
-            }),
-        )
-    }
-}
-
-/// Offscreen frames are synchronous: always this slot, once it is idle.
-const OFFSCREEN_SLOT: usize = 0;
 
 /// Imports the accumulation image (its description, binding and current
 /// state); the graph leaves it ready to be sampled.

@@ -1,0 +1,300 @@
+//! Offscreen frames: a still, a still of `spp` jittered samples folded into
+//! a running mean, and the post-processing chain alone on an uploaded HDR
+//! image. All three go through [`Renderer::offscreen`], the one readback
+//! sequence: build a graph, copy its result into the offscreen slot's
+//! readback buffer, submit, wait, decode.
+
+use ash::vk;
+use gpu_allocator::MemoryLocation;
+
+use super::resources::SceneResources;
+use super::{
+    Accumulation, HdrSource, PostSettings, Renderer, add_frame, add_scene_frame, halton,
+    import_mean, slots,
+};
+use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
+use crate::graph::{Graph, ImageHandle};
+use crate::passes::{Pipelines, copy};
+use crate::scene::{DiskKind, Scene};
+use crate::vk::{Access, Buffer, BufferBinding, ImageBinding, ImageDesc};
+use crate::{Error, Result};
+
+impl Renderer {
+    /// Renders `scene` at `width` x `height` offscreen and reads the result
+    /// back (waits for it).
+    pub fn render(
+        &mut self,
+        scene: &Scene,
+        width: u32,
+        height: u32,
+        kind: OutputKind,
+    ) -> Result<Frame> {
+        self.check_size(width, height)?;
+        if kind == OutputKind::Geodesic && scene.disk.kind == DiskKind::Volumetric {
+            return Err(Error::Usage(
+                "--aov geodesic describes thin-disk hits; this scene's disk is volumetric".into(),
+            ));
+        }
+        self.prepare_scene(scene)?;
+        self.slots[OFFSCREEN_SLOT].wait()?;
+        let build = std::time::Instant::now();
+        self.write_params(OFFSCREEN_SLOT, scene, (width, height), (0.0, 0.0))?;
+        self.offscreen(
+            (width, height),
+            kind,
+            build,
+            |g, pipelines, resources, params| {
+                add_scene_frame(
+                    g,
+                    pipelines,
+                    resources,
+                    scene,
+                    params,
+                    (width, height),
+                    kind,
+                    None,
+                )
+            },
+        )
+    }
+
+    /// Renders `scene` with `spp` jittered samples per pixel (Halton (2, 3)
+    /// offsets, the same for every frame, so sequences are deterministic):
+    /// each sample's ray march is folded into a running mean, and bloom,
+    /// exposure and tone map run once on the mean. `spp` <= 1 is
+    /// [`Renderer::render`]; the geodesic AOV takes one sample (it describes
+    /// rays, not light).
+    pub fn render_samples(
+        &mut self,
+        scene: &Scene,
+        width: u32,
+        height: u32,
+        kind: OutputKind,
+        spp: u32,
+    ) -> Result<Frame> {
+        if spp <= 1 || kind == OutputKind::Geodesic {
+            return self.render(scene, width, height, kind);
+        }
+        self.check_size(width, height)?;
+        self.prepare_scene(scene)?;
+        // The plain EXR is the mean itself: the linear composite with
+        // nothing applied turns it into the same half floats.
+        let mut post_scene;
+        let (scene, output) = if kind == OutputKind::Hdr {
+            post_scene = scene.clone();
+            post_scene.bloom.strength = 0.0;
+            post_scene.post.auto_exposure = false;
+            post_scene.post.exposure_ev = 0.0;
+            post_scene.post.saturation = 1.0;
+            (&post_scene, OutputKind::HdrPost)
+        } else {
+            (scene, kind)
+        };
+        self.ensure_mean((width, height))?;
+        let mut timings = FrameTimings::default();
+        for i in 0..spp {
+            self.slots[OFFSCREEN_SLOT].wait()?;
+            let build = std::time::Instant::now();
+            let jitter = (
+                (halton(i + 1, 2) - 0.5) as f32,
+                (halton(i + 1, 3) - 0.5) as f32,
+            );
+            self.write_params(OFFSCREEN_SLOT, scene, (width, height), jitter)?;
+            let mean = self
+                .mean
+                .as_ref()
+                .map(|(img, state)| (img.desc, img.binding(), *state))
+                .ok_or_else(|| Error::Other("accumulation image missing".into()))?;
+            if let Some((_, state)) = self.mean.as_mut() {
+                *state = Access::ComputeSampledRead;
+            }
+            if i + 1 < spp {
+                let mut g = Graph::new(width, height);
+                let params = self.slots[OFFSCREEN_SLOT].params.binding();
+                let sample = Sample {
+                    scene,
+                    size: (width, height),
+                    mean: mean.clone(),
+                    index: i,
+                };
+                sample.add(
+                    &mut g,
+                    &self.pipelines,
+                    &self.resources,
+                    params,
+                    OutputKind::Hdr,
+                );
+                self.slots[OFFSCREEN_SLOT].submit(&self.gpu, g, &[], &[])?;
+                if let Some(t) = self.slots[OFFSCREEN_SLOT].wait()? {
+                    timings.add(&t);
+                }
+                continue;
+            }
+            let mut frame = self.offscreen(
+                (width, height),
+                kind,
+                build,
+                |g, pipelines, resources, params| {
+                    let sample = Sample {
+                        scene,
+                        size: (width, height),
+                        mean,
+                        index: i,
+                    };
+                    sample.add(g, pipelines, resources, params, output)
+                },
+            )?;
+            timings.add(&frame.timings);
+            timings.cpu = frame.timings.cpu;
+            frame.timings = timings;
+            return Ok(frame);
+        }
+        Err(Error::Other("no samples rendered".into()))
+    }
+
+    /// The one offscreen path: on the offscreen slot (idle, its parameters
+    /// written), `build` adds a frame to a new graph and returns the image to
+    /// read back; it is copied into the slot's readback buffer, submitted,
+    /// waited for and decoded as `kind`.
+    fn offscreen<F>(
+        &mut self,
+        (width, height): (u32, u32),
+        kind: OutputKind,
+        build_start: std::time::Instant,
+        build: F,
+    ) -> Result<Frame>
+    where
+        F: for<'a> FnOnce(
+            &mut Graph<'a>,
+            &'a Pipelines,
+            &SceneResources,
+            BufferBinding,
+        ) -> ImageHandle,
+    {
+        let needed = u64::from(width) * u64::from(height) * kind.texel_bytes();
+        let gpu = self.gpu.clone();
+        let slot = &mut self.slots[OFFSCREEN_SLOT];
+        let readback = slot.ensure_readback(&gpu, needed)?.binding();
+        let params = slot.params.binding();
+        let mut g = Graph::new(width, height);
+        let mut out_buf = g.import_buffer(
+            "readback",
+            readback,
+            Access::Nothing,
+            Some(Access::HostRead),
+        );
+        let result = build(&mut g, &self.pipelines, &self.resources, params);
+        copy::add_copy_to_buffer(&mut g, &result, &mut out_buf);
+        let slot = &mut self.slots[OFFSCREEN_SLOT];
+        let build_ms = slots::ms_since(build_start);
+        slot.submit(&self.gpu, g, &[], &[])?;
+        let mut timings = slot.wait()?.unwrap_or_default();
+        timings.cpu.build_ms = build_ms;
+        let readback_start = std::time::Instant::now();
+        let readback = slot
+            .readback
+            .as_ref()
+            .ok_or_else(|| Error::Other("readback buffer missing".into()))?;
+        let pixels = Pixels::decode(kind, &readback.mapped()?[..needed as usize]);
+        timings.cpu.readback_ms = slots::ms_since(readback_start);
+        Ok(Frame {
+            width,
+            height,
+            pixels,
+            timings,
+        })
+    }
+
+    /// Runs the post-processing part of the recipe (bloom, exposure, tone
+    /// map) on an HDR image given as RGBA f32 rows, row 0 at the top; returns
+    /// the 8-bit frame.
+    pub fn post_process(
+        &mut self,
+        hdr: &[f32],
+        width: u32,
+        height: u32,
+        bloom: &crate::scene::Bloom,
+        post: &crate::scene::Post,
+    ) -> Result<Frame> {
+        let texels = width as usize * height as usize;
+        if width == 0 || height == 0 || hdr.len() != 4 * texels {
+            return Err(Error::Usage(format!(
+                "post_process: {} floats do not make a {width}x{height} RGBA image",
+                hdr.len()
+            )));
+        }
+        self.check_size(width, height)?;
+        let bytes: &[u8] = bytemuck::cast_slice(hdr);
+        let mut staging = Buffer::new(
+            &self.gpu,
+            "post input staging",
+            bytes.len() as u64,
+            vk::BufferUsageFlags::TRANSFER_SRC,
+            MemoryLocation::CpuToGpu,
+        )?;
+        staging.mapped_mut()?.copy_from_slice(bytes);
+        self.slots[OFFSCREEN_SLOT].wait()?;
+        let build = std::time::Instant::now();
+        let staged = staging.binding();
+        let frame = self.offscreen(
+            (width, height),
+            OutputKind::Ldr,
+            build,
+            |g, pipelines, _, _| {
+                let src = g.import_buffer("post input staging", staged, Access::HostWrite, None);
+                let mut input =
+                    g.create_relative("hdr input", vk::Format::R32G32B32A32_SFLOAT, 1, 1);
+                copy::add_upload(g, &src, &mut input, 16);
+                add_frame(
+                    g,
+                    pipelines,
+                    HdrSource::Image(&input),
+                    PostSettings { bloom, post },
+                    OutputKind::Ldr,
+                    None,
+                )
+            },
+        );
+        drop(staging);
+        frame
+    }
+}
+
+/// One jittered sample of [`Renderer::render_samples`], folded into the
+/// running mean.
+struct Sample<'s> {
+    scene: &'s Scene,
+    size: (u32, u32),
+    /// The accumulation image: description, binding, current state.
+    mean: (ImageDesc, ImageBinding, Access),
+    index: u32,
+}
+
+impl Sample<'_> {
+    fn add<'a>(
+        self,
+        g: &mut Graph<'a>,
+        pipelines: &'a Pipelines,
+        resources: &SceneResources,
+        params: BufferBinding,
+        output: OutputKind,
+    ) -> ImageHandle {
+        let mut mean = import_mean(g, self.mean);
+        add_scene_frame(
+            g,
+            pipelines,
+            resources,
+            self.scene,
+            params,
+            self.size,
+            output,
+            Some(Accumulation {
+                mean: &mut mean,
+                index: self.index,
+            }),
+        )
+    }
+}
+
+/// Offscreen frames are synchronous: always this slot, once it is idle.
+const OFFSCREEN_SLOT: usize = 0;
