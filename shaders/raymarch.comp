@@ -25,7 +25,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-// Specialization constants (src/passes/raymarch.rs, `Variant`): code a
+// Specialization constants (src/passes/raymarch/mod.rs, `Variant`): code a
 // scene does not use is compiled out of its pipeline. On a CPU driver such as
 // lavapipe every branch runs under a mask for every pixel, taken or not, so
 // this is what keeps the cost to the code a scene uses.
@@ -115,24 +115,24 @@ layout(binding = 5) uniform sampler3D volume_noise;
 // part sqrt(1 - rs/r) (colour and brightness), the kinematic rest to the
 // colour (Doppler) and to the brightness (beaming).
 vec3 disk_color(float r, float g_full) {
-    float rs = P.holes[0].w;
-    float r_in = P.disk.x;
+    float rs = P.metric.holes[0].w;
+    float r_in = P.disk.inner;
     // One reciprocal for the divisions (dear on a CPU driver).
     float ir = 1.0 / r;
     float f = max((1.0 - sqrt(r_in * ir)) * (ir * ir * ir), 0.0);
-    float t_rel = sqrt(sqrt(f * (1.0 / P.disk_temp.y)));   // T / T_peak
+    float t_rel = sqrt(sqrt(f * (1.0 / P.disk.nt_peak)));   // T / T_peak
     // The gravitational part as this observer measures it: emitter's clock
     // against the camera's.
     float lapse2 = max(1.0 - rs * ir, 1e-6), inv_lapse = inversesqrt(lapse2);
-    float g_grav = lapse2 * inv_lapse * (1.0 / P.observer_r.w);
-    bool doppler = P.disk_temp.z > 0.5, redshift = P.disk_temp.w > 0.5, beaming = P.disk.w > 0.5;
-    float g_kin = g_full * inv_lapse * P.observer_r.w;
+    float g_grav = lapse2 * inv_lapse * (1.0 / P.observer.lapse);
+    bool doppler = P.disk.doppler > 0.5, redshift = P.disk.redshift > 0.5, beaming = P.disk.beaming > 0.5;
+    float g_kin = g_full * inv_lapse * P.observer.lapse;
     float g_base = redshift ? g_grav : 1.0;
     float g = doppler ? g_base * g_kin : g_base;          // colour
     float g_i = beaming ? g_base * g_kin : g_base;        // brightness
-    vec3 c = blackbody(g * t_rel * P.disk_temp.x);
+    vec3 c = blackbody(g * t_rel * P.disk.peak_temperature);
     float gt = g_i * t_rel;
-    return c * (P.disk.z * gt * gt * gt * gt);
+    return c * (P.disk.brightness * gt * gt * gt * gt);
 }
 
 #include "volume.glsl"
@@ -150,19 +150,19 @@ float thin_disk_density_at(float u, float omega, float az, float t) {
     vec2 uv = vec2(phi * (1.0 / 6.2831853), -1.6 * log(u));
     float n = textureLod(disk_noise, uv, 0.0).r;
     float d = max(1.0 + 2.6 * (n - 0.5), 0.0);
-    return mix(1.0, d * d, P.disk_look.x);
+    return mix(1.0, d * d, P.disk.structure);
 }
 
 // The same from the radius (u = rs / r, omega Keplerian).
 float thin_disk_density(float r, float az, float t) {
-    float rs = P.holes[0].w;
+    float rs = P.metric.holes[0].w;
     return thin_disk_density_at(rs / r, sqrt(0.5 * rs / (r * r * r)), az, t);
 }
 
 // Azimuth of a point in the disk's frame (the AOV's convention).
 float disk_azimuth(vec3 p) {
-    vec3 d = p - P.holes[0].xyz;
-    return atan(dot(d, P.disk_e2.xyz), dot(d, P.disk_e1.xyz));
+    vec3 d = p - P.metric.holes[0].xyz;
+    return atan(dot(d, P.disk.e2), dot(d, P.disk.e1));
 }
 
 #define OUT_ESCAPED 0
@@ -193,14 +193,14 @@ bool volumetric() {
 vec3 asymptotic_direction(vec3 x, vec3 v) {
     vec3 d = normalize(v);
     vec3 bend = vec3(0.0);
-    for (uint i = 0u; i < P.counts.x; ++i) {
-        vec3 rel = x - P.holes[i].xyz;
+    for (uint i = 0u; i < P.metric.hole_count; ++i) {
+        vec3 rel = x - P.metric.holes[i].xyz;
         float s = dot(rel, d);
         vec3 perp = rel - s * d;
         float b = length(perp);
         float R = length(rel);
         if (b < 1e-6) continue;
-        float delta = P.holes[i].w / (2.0 * b) * (2.0 - s * (2.0 * s * s + 3.0 * b * b) / (R * R * R));
+        float delta = P.metric.holes[i].w / (2.0 * b) * (2.0 - s * (2.0 * s * s + 3.0 * b * b) / (R * R * R));
         bend -= delta * perp / b;
     }
     return normalize(d + bend);
@@ -208,7 +208,7 @@ vec3 asymptotic_direction(vec3 x, vec3 v) {
 
 // Signed height above the disk plane.
 float plane_dist(vec3 x) {
-    return dot(x - P.holes[0].xyz, P.disk_normal.xyz);
+    return dot(x - P.metric.holes[0].xyz, P.disk.normal);
 }
 
 // Cubic Hermite position between two states, t in [0, 1].
@@ -239,15 +239,15 @@ vec3 plane_crossing(vec3 x0, vec3 v0, vec3 x1, vec3 v1, float h) {
 // (1 - Omega lambda), lambda = L / E from the conserved angular momentum
 // x cross x' and the asymptotic speed |x'|^2 - rs h^2 / r^3.
 float disk_redshift(vec3 p, vec3 x, vec3 v) {
-    float rs = P.holes[0].w;
-    float r = length(p - P.holes[0].xyz);
-    vec3 d = x - P.holes[0].xyz;
+    float rs = P.metric.holes[0].w;
+    float r = length(p - P.metric.holes[0].xyz);
+    vec3 d = x - P.metric.holes[0].xyz;
     float rx = length(d);
     vec3 hv = cross(d, v);
     // With gravity off the ray is straight and |v| is its speed everywhere.
-    float bend = P.integ.z > 0.5 ? rs * dot(hv, hv) / (rx * rx * rx) : 0.0;
+    float bend = P.metric.gravity > 0.5 ? rs * dot(hv, hv) / (rx * rx * rx) : 0.0;
     float vinf = sqrt(max(dot(v, v) - bend, 1e-20));
-    float lambda = dot(cross(d, -v), P.disk_normal.xyz) / vinf;
+    float lambda = dot(cross(d, -v), P.disk.normal) / vinf;
     float omega = sqrt(0.5 * rs / (r * r * r));
     return sqrt(max(1.0 - 1.5 * rs / r, 0.0)) / (1.0 - omega * lambda);
 }
@@ -264,7 +264,7 @@ const int VOLUME_SAMPLES = 12;
 
 void volume_crossing(LightPath path, float phi_j, float tilt, vec2 inside, vec3 c, vec3 e1,
                      vec3 e2, float rs, float lambda, inout Hit hit) {
-    float H = P.vol0.x;
+    float H = P.volume.half_height;
     float r_j = rs / path_u(path, clamp(phi_j, 0.0, path.phi_end));
     // At most half-way to the neighbouring crossings, so no angle is counted
     // twice when the path stays in the slab from one crossing to the next.
@@ -300,11 +300,11 @@ void volume_crossing(LightPath path, float phi_j, float tilt, vec2 inside, vec3 
         if (VOLUME_BLACKBODY) {
             float omega = sqrt(0.5 * rs / (r * r * r));
             float g = sqrt(max(1.0 - 1.5 * rs / r, 1e-4)) / (1.0 - omega * lambda);
-            emit = disk_color(max(r, 1.0001 * P.disk.x), g * observer_g);
+            emit = disk_color(max(r, 1.0001 * P.disk.inner), g * observer_g);
         } else {
             emit = volume_colormap(r);
         }
-        hit.glow += hit.trans * emit * (dens * P.vol1.z * ds);
+        hit.glow += hit.trans * emit * (dens * P.volume.lit * ds);
         hit.trans *= exp(-dens * 0.8 * ds);
     }
 }
@@ -350,7 +350,7 @@ bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 no
     float u = path_u(path, phi);
     float r = rs / u;
     // The windows' edges are rounded; the radius decides.
-    if (r < P.disk.x || r > P.disk.y) return false;
+    if (r < P.disk.inner || r > P.disk.outer) return false;
     float j = round((phi - phi0) * (1.0 / PI));
     float odd = j - 2.0 * floor(0.5 * j);
     vec3 pos = c + (r * (1.0 - 2.0 * odd)) * node;
@@ -363,11 +363,11 @@ bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 no
     hit.g = g;
     return true;
 #else
-    float t = P.vol1.y;
-    if (LIGHT_DELAY) t -= P.disk_look.z * light_travel_time(path, phi, b_imp, rs);
+    float t = P.disk.rotation_time;
+    if (LIGHT_DELAY) t -= P.disk.speed * light_travel_time(path, phi, b_imp, rs);
     // (u and omega at hand: no division or square root again.)
     float dens = THIN_STRUCTURE ? thin_disk_density_at(u, omega, az0 + odd * PI, t) : 1.0;
-    float alpha = clamp(P.disk_look.y * dens, 0.0, 1.0);
+    float alpha = clamp(P.disk.opacity * dens, 0.0, 1.0);
     hit.glow += hit.trans * alpha * dens * disk_color(r, g * observer_g);
     hit.trans *= 1.0 - alpha;
     if (hit.trans < 0.003) {
@@ -392,8 +392,8 @@ Hit trace_planar(vec3 x, vec3 d) {
     hit.glow = vec3(0.0);
     hit.trans = 1.0;
     hit.disk_ahead = false;
-    vec3 c = P.holes[0].xyz;
-    float rs = P.holes[0].w;
+    vec3 c = P.metric.holes[0].xyz;
+    float rs = P.metric.holes[0].w;
     vec3 rel = x - c;
     float r0 = length(rel), ir0 = 1.0 / r0;
     vec3 e1 = rel * ir0;
@@ -410,12 +410,12 @@ Hit trace_planar(vec3 x, vec3 d) {
     float u0 = rs * ir0;
     float du = -(dot(d, e1) / dot(d, e2)) * u0;
     // The thin disk's annulus in u (anything for other disks).
-    float u_lo = rs / max(P.disk.y, 1e-6), u_hi = rs / max(P.disk.x, 1e-6);
+    float u_lo = rs / max(P.disk.outer, 1e-6), u_hi = rs / max(P.disk.inner, 1e-6);
     LightPath path = light_path(u0, du, u_lo, min(u_hi, 1.0));
     // Impact parameter b (world units) and the photon's angular momentum
     // about the disk axis (the ray runs backwards: -nrm).
     float b_imp = rs * inversesqrt(max(du * du + u0 * u0 * (1.0 - u0), 1e-30));
-    vec3 N = P.disk_normal.xyz;
+    vec3 N = P.disk.normal;
     float lambda = -dot(nrm, N) * b_imp;
 
     const int kind = DISK_KIND;
@@ -450,7 +450,7 @@ Hit trace_planar(vec3 x, vec3 d) {
             // slab (the same for every pixel, so no divergence), else from the
             // one ahead; four in all. Later slabs are the thin rings of rays
             // that wind, and every extra one costs the whole SIMD group.
-            bool camera_in_slab = abs(dot(x - c, N)) < 1.5 * P.vol0.x;
+            bool camera_in_slab = abs(dot(x - c, N)) < 1.5 * P.volume.half_height;
             float phi = camera_in_slab ? phi0 - PI : (phi0 <= 1e-6 ? phi0 + PI : phi0);
             // The angles where the path is inside the outer radius (u >= u_lo):
             // scattered, between the annulus windows' outer ends; plunging,
@@ -503,9 +503,9 @@ Hit trace_straight(vec3 x, vec3 d) {
     hit.trans = 1.0;
     hit.disk_ahead = false;
     float t_h = 1e30;
-    for (uint k = 0u; k < P.counts.x; ++k) {
-        vec3 rel = x - P.holes[k].xyz;
-        float rs = P.holes[k].w;
+    for (uint k = 0u; k < P.metric.hole_count; ++k) {
+        vec3 rel = x - P.metric.holes[k].xyz;
+        float rs = P.metric.holes[k].w;
         float b = dot(rel, d);
         float cc = dot(rel, rel) - rs * rs;
         float disc = b * b - cc;
@@ -513,14 +513,14 @@ Hit trace_straight(vec3 x, vec3 d) {
         if (cc < 0.0) t_h = 0.0;                              // inside a horizon
         else if (disc > 0.0 && t > 0.0) t_h = min(t_h, t);
     }
-    vec3 c0 = P.holes[0].xyz;
-    vec3 N = P.disk_normal.xyz;
+    vec3 c0 = P.metric.holes[0].xyz;
+    vec3 N = P.disk.normal;
     float y0 = plane_dist(x), dn = dot(d, N);
     if (DISK_KIND == DISK_THIN) {
         float t_d = -y0 / dn;
         vec3 p = x + t_d * d;
         float rho = length(p - c0);
-        if (t_d > 0.0 && t_d < t_h && rho >= P.disk.x && rho <= P.disk.y) {
+        if (t_d > 0.0 && t_d < t_h && rho >= P.disk.inner && rho <= P.disk.outer) {
             hit.outcome = OUT_DISK;
             hit.pos = p;
             hit.g = disk_redshift(p, x, d);
@@ -528,7 +528,7 @@ Hit trace_straight(vec3 x, vec3 d) {
         }
     } else if (DISK_KIND == DISK_VOLUME) {
         // Where |height| < H along the line, before any horizon.
-        float H = P.vol0.x;
+        float H = P.volume.half_height;
         float ta = abs(dn) > 1e-9 ? (-H - y0) / dn : (abs(y0) < H ? 0.0 : 1e30);
         float tb = abs(dn) > 1e-9 ? (H - y0) / dn : (abs(y0) < H ? 1e30 : -1e30);
         float t0 = max(min(ta, tb), 0.0);
@@ -536,7 +536,7 @@ Hit trace_straight(vec3 x, vec3 d) {
         // within the outer radius of the hole.
         vec3 rel = x - c0;
         float s = dot(rel, d);
-        float far = -s + sqrt(max(P.disk.y * P.disk.y - (dot(rel, rel) - s * s), 0.0));
+        float far = -s + sqrt(max(P.disk.outer * P.disk.outer - (dot(rel, rel) - s * s), 0.0));
         float t1 = min(min(max(ta, tb), t_h), far);
         float lambda = dot(cross(rel, -d), N);
         const float CHORD = 16.0 * VOLUME_DS;
@@ -563,15 +563,15 @@ Hit trace(vec3 x, vec3 v) {
     hit.trans = 1.0;
     hit.disk_ahead = false;
     bool vol = volumetric();
-    float tol = P.integ.x;
-    float r_esc = P.integ.y;
-    bool gravity = P.integ.z > 0.5;
+    float tol = P.integrator.tolerance;
+    float r_esc = P.integrator.escape_radius;
+    bool gravity = P.metric.gravity > 0.5;
     bool thin = DISK_KIND == DISK_THIN;
-    vec3 c0 = P.holes[0].xyz;
+    vec3 c0 = P.metric.holes[0].xyz;
 
     vec3 a = gravity ? accel(x, v) : vec3(0.0);
     float h = 0.05 * max(length(x - c0), 1.0);
-    uint budget = P.counts.w;
+    uint budget = P.integrator.steps;
     for (uint i = 0u; i < budget; ++i) {
         vec3 xn, vn, an;
         float err = 0.0;
@@ -590,8 +590,8 @@ Hit trace(vec3 x, vec3 v) {
             vec3 dd = x - c0;
             vec3 hv = cross(dd, v);
             float rr = length(dd);
-            float vinf = sqrt(max(dot(v, v) - (gravity ? P.holes[0].w * dot(hv, hv) / (rr * rr * rr) : 0.0), 1e-20));
-            float lambda = dot(cross(dd, -v), P.disk_normal.xyz) / vinf;
+            float vinf = sqrt(max(dot(v, v) - (gravity ? P.metric.holes[0].w * dot(hv, hv) / (rr * rr * rr) : 0.0), 1e-20));
+            float lambda = dot(cross(dd, -v), P.disk.normal) / vinf;
             volume_segment(x, xn, lambda, hit.glow, hit.trans);
             if (hit.trans < 0.003) {
                 hit.outcome = OUT_CAPTURED;
@@ -604,14 +604,14 @@ Hit trace(vec3 x, vec3 v) {
                 vec3 p = plane_crossing(x, v, xn, vn, h);
                 // A crossing inside a horizon (a hole in the disk's plane)
                 // comes after the ray fell in.
-                for (uint k = 0u; k < P.counts.x; ++k) {
-                    if (length(p - P.holes[k].xyz) < P.holes[k].w) {
+                for (uint k = 0u; k < P.metric.hole_count; ++k) {
+                    if (length(p - P.metric.holes[k].xyz) < P.metric.holes[k].w) {
                         hit.outcome = OUT_CAPTURED;
                         return hit;
                     }
                 }
                 float rho = length(p - c0);
-                if (rho >= P.disk.x && rho <= P.disk.y) {
+                if (rho >= P.disk.inner && rho <= P.disk.outer) {
                     hit.outcome = OUT_DISK;
                     hit.pos = p;
                     // lambda and v_inf are conserved: any consistent state will do.
@@ -623,9 +623,9 @@ Hit trace(vec3 x, vec3 v) {
 
         // Horizons and escape.
         float rmin = 1e30;
-        for (uint k = 0u; k < P.counts.x; ++k) {
-            float r = length(xn - P.holes[k].xyz);
-            if (r < P.holes[k].w) {
+        for (uint k = 0u; k < P.metric.hole_count; ++k) {
+            float r = length(xn - P.metric.holes[k].xyz);
+            if (r < P.metric.holes[k].w) {
                 hit.outcome = OUT_CAPTURED;
                 return hit;
             }
@@ -650,19 +650,19 @@ Hit trace(vec3 x, vec3 v) {
 // The coordinate direction of pixel px's camera ray (binding camera
 // convention, the conventions in the README, "Physics"); sets observer_g.
 vec3 pixel_ray(uvec2 px) {
-    uint w = P.counts.y, hgt = P.counts.z;
-    float tan_half = P.cam_pos.w, aspect = P.cam_right.w;
+    uint w = P.camera.size.x, hgt = P.camera.size.y;
+    float tan_half = P.camera.tan_half_fov, aspect = P.camera.aspect;
     // Sub-pixel jitter (cam_up.w, cam_fwd.w; 0 = the pixel centre) for
     // accumulated anti-aliasing in the window.
-    float sx = ((float(px.x) + 0.5 + P.cam_up.w) * (2.0 / float(w)) - 1.0) * tan_half * aspect;
-    float sy = (1.0 - (float(px.y) + 0.5 + P.cam_fwd.w) * (2.0 / float(hgt))) * tan_half;
-    vec3 dir = normalize(P.cam_fwd.xyz + sx * P.cam_right.xyz + sy * P.cam_up.xyz);
+    float sx = ((float(px.x) + 0.5 + P.camera.jitter_x) * (2.0 / float(w)) - 1.0) * tan_half * aspect;
+    float sy = (1.0 - (float(px.y) + 0.5 + P.camera.jitter_y) * (2.0 / float(hgt))) * tan_half;
+    vec3 dir = normalize(P.camera.forward + sx * P.camera.right + sy * P.camera.up);
     // The pixel's direction is measured in the observer's own frame
     // (src/physics/observer.rs): aberration by its velocity into the static
     // frame, then the static frame's radial squeeze into a coordinate
     // direction; its clock and motion scale the redshift it measures.
-    if (int(P.observer.w) != OBS_FLAT) {
-        vec3 beta = P.observer.xyz;
+    if (int(P.observer.kind) != OBS_FLAT) {
+        vec3 beta = P.observer.velocity;
         float b2 = dot(beta, beta);
         float doppler = 1.0;
         if (OBSERVER_MOVES && b2 > 0.0) {
@@ -671,10 +671,10 @@ vec3 pixel_ray(uvec2 px) {
             dir = normalize((dir / gam - beta + (gam / (gam + 1.0)) * bd * beta) / (1.0 - bd));
             doppler = gam * (1.0 + dot(beta, dir));
         }
-        vec3 rh = P.observer_r.xyz;
+        vec3 rh = P.observer.radial;
         float dr = dot(dir, rh);
-        dir = normalize(P.observer_r.w * dr * rh + (dir - dr * rh));
-        observer_g = doppler / P.observer_r.w;
+        dir = normalize(P.observer.lapse * dr * rh + (dir - dr * rh));
+        observer_g = doppler / P.observer.lapse;
     }
     return dir;
 }
@@ -706,7 +706,7 @@ void disk_pass() {
     if (i >= disk_list.count) return;
     uint packed = disk_list.px[i];
     ivec2 px = ivec2(packed & 0xffffu, packed >> 16u);
-    Hit hit = trace_planar(P.cam_pos.xyz, pixel_ray(uvec2(px)));
+    Hit hit = trace_planar(P.camera.position, pixel_ray(uvec2(px)));
     vec3 behind = hit.trans < 0.003 ? vec3(0.0) : imageLoad(out_img, px).rgb;
     imageStore(out_img, px, vec4(storable(hit.glow + hit.trans * behind), 1.0));
 }
@@ -720,7 +720,7 @@ void main() {
         return;
     }
 #endif
-    uint w = P.counts.y, hgt = P.counts.z;
+    uint w = P.camera.size.x, hgt = P.camera.size.y;
 #ifdef RAY_DIFFERENTIALS
     // The 64 invocations of a group cover its 8x8 tile in 2x2 quads
     // (subgroup quads are four consecutive invocations), so each pixel can
@@ -739,24 +739,24 @@ void main() {
 #endif
 
     vec3 dir = pixel_ray(px);
-    float tan_half = P.cam_pos.w;
+    float tan_half = P.camera.tan_half_fov;
 
     // The volume's sample offset: per pixel, and per accumulated frame (salted
     // by the sub-pixel jitter, zero for a single offscreen frame) so the
     // window's accumulation averages the grain away.
-    volume_jitter = hash33(uvec3(px, 7u + floatBitsToUint(P.cam_up.w) + 3u * floatBitsToUint(P.cam_fwd.w))).x;
-    Hit hit = ONE_HOLE ? trace_planar(P.cam_pos.xyz, dir)
-            : STRAIGHT ? trace_straight(P.cam_pos.xyz, dir)
-            : trace(P.cam_pos.xyz, dir);
+    volume_jitter = hash33(uvec3(px, 7u + floatBitsToUint(P.camera.jitter_x) + 3u * floatBitsToUint(P.camera.jitter_y))).x;
+    Hit hit = ONE_HOLE ? trace_planar(P.camera.position, dir)
+            : STRAIGHT ? trace_straight(P.camera.position, dir)
+            : trace(P.camera.position, dir);
     hit.g *= observer_g;
 #ifdef GEODESIC_AOV
     vec4 aov = vec4(0.0, 0.0, 0.0, float(hit.outcome));
     if (hit.outcome == OUT_ESCAPED) {
         aov.xyz = hit.dir;
     } else if (hit.outcome == OUT_DISK) {
-        vec3 d = hit.pos - P.holes[0].xyz;
+        vec3 d = hit.pos - P.metric.holes[0].xyz;
         aov.x = length(d);
-        aov.y = atan(dot(d, P.disk_e2.xyz), dot(d, P.disk_e1.xyz));
+        aov.y = atan(dot(d, P.disk.e2), dot(d, P.disk.e1));
         aov.z = hit.g;
     }
     imageStore(out_img, ivec2(px), aov);
@@ -802,8 +802,8 @@ void main() {
     else if (!ONE_HOLE && hit.outcome == OUT_DISK) {
         // The general and straight paths' disk (several holes, gravity off): opaque. (The
         // closed-form path adds the disk's light as it goes; compiled out.)
-        float r = length(hit.pos - P.holes[0].xyz);
-        float dens = THIN_STRUCTURE ? thin_disk_density(r, disk_azimuth(hit.pos), P.vol1.y) : 1.0;
+        float r = length(hit.pos - P.metric.holes[0].xyz);
+        float dens = THIN_STRUCTURE ? thin_disk_density(r, disk_azimuth(hit.pos), P.disk.rotation_time) : 1.0;
         color = dens * disk_color(r, hit.g);
     }
     color = hit.glow + hit.trans * color;

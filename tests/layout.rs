@@ -4,7 +4,6 @@
 
 use std::mem::{offset_of, size_of};
 
-use blackhole::passes::raymarch::RaymarchParams;
 
 /// Member offsets (by member index) of the struct named `name` in a SPIR-V module.
 fn member_offsets(spirv: &[u8], name: &str) -> Vec<u32> {
@@ -49,47 +48,145 @@ fn member_offsets(spirv: &[u8], name: &str) -> Vec<u32> {
     m.into_iter().map(|(_, off)| off).collect()
 }
 
-#[test]
-fn raymarch_params_match_the_glsl_block() {
-    let rust = [
-        offset_of!(RaymarchParams, cam_pos),
-        offset_of!(RaymarchParams, cam_right),
-        offset_of!(RaymarchParams, cam_up),
-        offset_of!(RaymarchParams, cam_fwd),
-        offset_of!(RaymarchParams, disk_normal),
-        offset_of!(RaymarchParams, disk),
-        offset_of!(RaymarchParams, disk_e1),
-        offset_of!(RaymarchParams, disk_e2),
-        offset_of!(RaymarchParams, disk_temp),
-        offset_of!(RaymarchParams, vol0),
-        offset_of!(RaymarchParams, plane_pos),
-        offset_of!(RaymarchParams, plane_n),
-        offset_of!(RaymarchParams, plane_u),
-        offset_of!(RaymarchParams, vol1),
-        offset_of!(RaymarchParams, sky),
-        offset_of!(RaymarchParams, integ),
-        offset_of!(RaymarchParams, observer),
-        offset_of!(RaymarchParams, observer_r),
-        offset_of!(RaymarchParams, disk_look),
-        offset_of!(RaymarchParams, sky_m0),
-        offset_of!(RaymarchParams, sky_m1),
-        offset_of!(RaymarchParams, sky_m2),
-        offset_of!(RaymarchParams, counts),
-        offset_of!(RaymarchParams, holes),
-    ];
+/// Offsets of the struct `name` in every ray-march build against `rust`.
+fn raymarch_struct_matches(name: &str, rust: &[usize]) {
     for spirv in [
         blackhole::shaders::RAYMARCH,
         blackhole::shaders::RAYMARCH_AOV,
         blackhole::shaders::RAYMARCH_NO_QUAD,
+        blackhole::shaders::RAYMARCH_SPLIT,
     ] {
-        let glsl = member_offsets(spirv, "RaymarchParams");
+        let glsl = member_offsets(spirv, name);
         let rust: Vec<u32> = rust.iter().map(|&o| o as u32).collect();
-        assert_eq!(glsl, rust, "member offsets, GLSL vs Rust");
+        assert_eq!(glsl, rust, "{name}: member offsets, GLSL vs Rust");
     }
-    let holes = offset_of!(RaymarchParams, holes);
+}
+
+#[test]
+fn raymarch_params_match_the_glsl_block() {
+    use blackhole::passes::raymarch::params::*;
+    raymarch_struct_matches(
+        "RaymarchParams",
+        &[
+            offset_of!(RaymarchParams, camera),
+            offset_of!(RaymarchParams, observer),
+            offset_of!(RaymarchParams, metric),
+            offset_of!(RaymarchParams, integrator),
+            offset_of!(RaymarchParams, disk),
+            offset_of!(RaymarchParams, volume),
+            offset_of!(RaymarchParams, sky),
+            offset_of!(RaymarchParams, plane),
+        ],
+    );
+    raymarch_struct_matches(
+        "CameraParams",
+        &[
+            offset_of!(CameraParams, position),
+            offset_of!(CameraParams, tan_half_fov),
+            offset_of!(CameraParams, right),
+            offset_of!(CameraParams, aspect),
+            offset_of!(CameraParams, up),
+            offset_of!(CameraParams, jitter_x),
+            offset_of!(CameraParams, forward),
+            offset_of!(CameraParams, jitter_y),
+            offset_of!(CameraParams, size),
+            offset_of!(CameraParams, _pad),
+        ],
+    );
+    raymarch_struct_matches(
+        "ObserverParams",
+        &[
+            offset_of!(ObserverParams, velocity),
+            offset_of!(ObserverParams, kind),
+            offset_of!(ObserverParams, radial),
+            offset_of!(ObserverParams, lapse),
+        ],
+    );
+    raymarch_struct_matches(
+        "MetricParams",
+        &[
+            offset_of!(MetricParams, holes),
+            offset_of!(MetricParams, hole_count),
+            offset_of!(MetricParams, gravity),
+            offset_of!(MetricParams, _pad),
+            offset_of!(MetricParams, _pad) + 4,
+        ],
+    );
+    raymarch_struct_matches(
+        "IntegratorParams",
+        &[
+            offset_of!(IntegratorParams, tolerance),
+            offset_of!(IntegratorParams, escape_radius),
+            offset_of!(IntegratorParams, steps),
+            offset_of!(IntegratorParams, _pad),
+        ],
+    );
+    raymarch_struct_matches(
+        "DiskParams",
+        &[
+            offset_of!(DiskParams, normal),
+            offset_of!(DiskParams, kind),
+            offset_of!(DiskParams, e1),
+            offset_of!(DiskParams, rotation_time),
+            offset_of!(DiskParams, e2),
+            offset_of!(DiskParams, structure),
+            offset_of!(DiskParams, inner),
+            offset_of!(DiskParams, outer),
+            offset_of!(DiskParams, brightness),
+            offset_of!(DiskParams, beaming),
+            offset_of!(DiskParams, peak_temperature),
+            offset_of!(DiskParams, nt_peak),
+            offset_of!(DiskParams, doppler),
+            offset_of!(DiskParams, redshift),
+            offset_of!(DiskParams, opacity),
+            offset_of!(DiskParams, speed),
+            offset_of!(DiskParams, _pad),
+            offset_of!(DiskParams, _pad) + 4,
+        ],
+    );
+    raymarch_struct_matches(
+        "VolumeParams",
+        &[
+            offset_of!(VolumeParams, half_height),
+            offset_of!(VolumeParams, falloff_v),
+            offset_of!(VolumeParams, falloff_h),
+            offset_of!(VolumeParams, noise_scale),
+            offset_of!(VolumeParams, octaves),
+            offset_of!(VolumeParams, lit),
+            offset_of!(VolumeParams, blackbody),
+            offset_of!(VolumeParams, _pad),
+        ],
+    );
+    raymarch_struct_matches(
+        "SkyParams",
+        &[
+            offset_of!(SkyParams, kind),
+            offset_of!(SkyParams, scale),
+            offset_of!(SkyParams, brightness),
+            offset_of!(SkyParams, galaxy),
+            offset_of!(SkyParams, row0),
+            offset_of!(SkyParams, star_flux),
+            offset_of!(SkyParams, row1),
+            offset_of!(SkyParams, _pad0),
+            offset_of!(SkyParams, row2),
+            offset_of!(SkyParams, _pad1),
+        ],
+    );
+    raymarch_struct_matches(
+        "PlaneParams",
+        &[
+            offset_of!(PlaneParams, position),
+            offset_of!(PlaneParams, enabled),
+            offset_of!(PlaneParams, normal),
+            offset_of!(PlaneParams, spacing),
+            offset_of!(PlaneParams, axis),
+            offset_of!(PlaneParams, half_size),
+        ],
+    );
+    // The block ends with its last group (no trailing padding either side).
     assert_eq!(
         size_of::<RaymarchParams>(),
-        holes + 16 * blackhole::scene::MAX_HOLES
+        offset_of!(RaymarchParams, plane) + size_of::<PlaneParams>()
     );
 }
 

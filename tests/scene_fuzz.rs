@@ -8,18 +8,28 @@
 use std::mem::offset_of;
 
 use blackhole::Scene;
-use blackhole::passes::raymarch::RaymarchParams;
+use blackhole::passes::raymarch::params::{
+    CameraParams, IntegratorParams, MetricParams, RaymarchParams,
+};
+use blackhole::passes::raymarch::FrameSpec;
 use proptest::prelude::*;
 
 const DEFAULT: &str = include_str!("../src/scene/presets/default.toml");
 
 /// Every float of the parameter block an accepted scene gives the GPU is
-/// finite (the counts are integers).
+/// finite (the image size, hole count and step budget are integers).
 fn assert_finite_params(scene: &Scene) {
-    let p = RaymarchParams::new(scene, 64, 36);
-    let counts = offset_of!(RaymarchParams, counts);
+    let p = RaymarchParams::new(scene, &FrameSpec::new(64, 36));
+    let integers = [
+        offset_of!(RaymarchParams, camera) + offset_of!(CameraParams, size),
+        offset_of!(RaymarchParams, camera) + offset_of!(CameraParams, size) + 4,
+        offset_of!(RaymarchParams, camera) + offset_of!(CameraParams, _pad),
+        offset_of!(RaymarchParams, camera) + offset_of!(CameraParams, _pad) + 4,
+        offset_of!(RaymarchParams, metric) + offset_of!(MetricParams, hole_count),
+        offset_of!(RaymarchParams, integrator) + offset_of!(IntegratorParams, steps),
+    ];
     for (i, w) in bytemuck::bytes_of(&p).chunks_exact(4).enumerate() {
-        if (counts..counts + 16).contains(&(4 * i)) {
+        if integers.contains(&(4 * i)) {
             continue;
         }
         let v = f32::from_le_bytes([w[0], w[1], w[2], w[3]]);

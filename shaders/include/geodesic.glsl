@@ -11,10 +11,10 @@
 
 vec3 accel(vec3 x, vec3 v) {
     vec3 a = vec3(0.0);
-    uint n = P.counts.x;
+    uint n = P.metric.hole_count;
     for (uint i = 0u; i < n; ++i) {
-        vec3 d = x - P.holes[i].xyz;
-        float rs = P.holes[i].w;
+        vec3 d = x - P.metric.holes[i].xyz;
+        float rs = P.metric.holes[i].w;
         float r2 = dot(d, d);
         vec3 hv = cross(d, v);
         float h2 = dot(hv, hv);
@@ -63,7 +63,7 @@ float dopri_step(vec3 x, vec3 v, vec3 a1, float h, float tol,
     an = accel(xn, vn);
     vec3 ex = h * (e1 * v1 + e3 * v3 + e4 * v4 + e5 * v5 + e6 * v6 + e7 * vn);
     vec3 ev = h * (e1 * a1 + e3 * a3 + e4 * a4 + e5 * a5 + e6 * a6 + e7 * an);
-    float sx = tol * max(length(x - P.holes[0].xyz), 1.0);
+    float sx = tol * max(length(x - P.metric.holes[0].xyz), 1.0);
     float sv = tol * max(length(v), 1e-3);
     return max(length(ex) / sx, length(ev) / sv);
 }

@@ -1,26 +1,27 @@
 // Parameters of the ray march, one block per frame written by the host.
-// Mirrored by `RaymarchParams` in src/passes/raymarch.rs; a test checks the
-// two layouts agree (all vec4, so std430 and std140 lay it out alike). A
-// read-only storage buffer rather than a uniform buffer: see RAYMARCH_BINDINGS
-// in src/passes/mod.rs for the driver leak that avoids.
+// Mirrored by `RaymarchParams` in src/passes/raymarch/params.rs, built there
+// in one place from the scene and the frame; tests/layout.rs checks every
+// member's offset against the SPIR-V. A read-only storage buffer rather than a
+// uniform buffer: see RAYMARCH_BINDINGS in src/passes/mod.rs for the driver
+// leak that avoids.
 #ifndef PARAMS_GLSL
 #define PARAMS_GLSL
 
 #define MAX_HOLES 8
 
-// Disk kinds (disk_normal.w).
+// Disk kinds (disk.kind).
 #define DISK_NONE 0
 #define DISK_THIN 1
 #define DISK_VOLUME 2
 
-// Sky kinds (sky.x).
+// Sky kinds (sky.kind).
 #define SKY_BLACK 0
 #define SKY_CHECKER 1
 #define SKY_STARS 2
 #define SKY_IMAGE 3
 #define SKY_CATALOGUE 4
 
-// Observer kinds (observer.w), as src/physics/observer.rs.
+// Observer kinds (observer.kind), as src/physics/observer.rs.
 #define OBS_STATIC 0
 #define OBS_ORBITING 1
 #define OBS_FALLING 2
@@ -30,31 +31,90 @@
 #define LUT_MIN_K 500.0
 #define LUT_MAX_K 100000.0
 
+// The block in named groups. Every vec3 is followed by a float, so each
+// group is a whole number of 16-byte rows and std430 places every member
+// where the #[repr(C)] Rust twin does (checked member by member).
+struct CameraParams {
+    vec3 position;  float tan_half_fov;  // tan(vfov / 2)
+    vec3 right;     float aspect;        // width / height
+    vec3 up;        float jitter_x;      // sub-pixel jitter, pixels (0: the pixel's centre)
+    vec3 forward;   float jitter_y;      // (down)
+    uvec2 size;     uvec2 pad;           // image width, height
+};
+
+struct ObserverParams {
+    vec3 velocity;  float kind;          // velocity in the static frame (world axes); OBS_*
+    vec3 radial;    float lapse;         // unit vector from the reference hole; sqrt(1 - rs/r) (1: flat)
+};
+
+struct MetricParams {
+    vec4 holes[MAX_HOLES];               // xyz: position, w: rs
+    uint hole_count;
+    float gravity;                       // 1 on, 0 off (straight rays)
+    float pad0;
+    float pad1;
+};
+
+struct IntegratorParams {
+    float tolerance;                     // general integrator: local error tolerance
+    float escape_radius;
+    uint steps;                          // step budget per ray
+    float pad;
+};
+
+struct DiskParams {
+    vec3 normal;    float kind;          // unit normal; DISK_* (compiled in: DISK_KIND)
+    vec3 e1;        float rotation_time; // in-plane basis (azimuth 0); speed x time (thin and volumetric)
+    vec3 e2;        float structure;     // e1 x normal (azimuth 90 degrees); thin: contrast of filaments
+    float inner;    float outer;         // radii
+    float brightness;
+    float beaming;                       // Doppler beaming on (1/0)
+    float peak_temperature;              // kelvin
+    float nt_peak;                       // Novikov-Thorne profile at its peak (the normaliser)
+    float doppler;                       // Doppler colour shift on (1/0)
+    float redshift;                      // gravitational redshift on (1/0)
+    float opacity;                       // thin: opacity at average density
+    float speed;                         // x Keplerian
+    float pad0;
+    float pad1;
+};
+
+struct VolumeParams {
+    float half_height;
+    float falloff_v;                     // fall of density with height (exponent)
+    float falloff_h;                     // fall of density with radius (exponent)
+    float noise_scale;
+    float octaves;
+    float lit;                           // emission scale
+    float blackbody;                     // 1 blackbody, 0 colour map
+    float pad;
+};
+
+struct SkyParams {
+    float kind;                          // SKY_* (compiled in: SKY_KIND)
+    float scale;                         // checker squares, star density, the catalogue's grid or an image's width
+    float brightness;
+    float galaxy;                        // the galaxy band
+    vec3 row0;      float star_flux;     // rows of the world-to-galactic matrix; flux of a magnitude-0 star
+    vec3 row1;      float pad0;
+    vec3 row2;      float pad1;
+};
+
+struct PlaneParams {
+    vec3 position;  float enabled;       // a point on the grid plane; 1 on (compiled in: GRID_PLANE)
+    vec3 normal;    float spacing;       // unit normal facing the camera; line spacing
+    vec3 axis;      float half_size;     // in-plane axis; half the side of the square
+};
+
 struct RaymarchParams {
-    vec4 cam_pos;      // xyz: camera position; w: tan(vfov / 2)
-    vec4 cam_right;    // xyz: right;           w: aspect (W / H)
-    vec4 cam_up;       // xyz: camera up;       w: sub-pixel jitter x (pixels, 0 = centre)
-    vec4 cam_fwd;      // xyz: forward;         w: sub-pixel jitter y (pixels, down)
-    vec4 disk_normal;  // xyz: unit normal;     w: disk kind (the ray march compiles its own in: DISK_KIND)
-    vec4 disk;         // x: inner radius, y: outer radius, z: brightness, w: Doppler beaming on
-    vec4 disk_e1;      // xyz: in-plane basis vector (azimuth 0)
-    vec4 disk_e2;      // xyz: e1 x normal (azimuth 90 degrees)
-    vec4 disk_temp;    // x: peak temperature (K), y: NT profile at the peak, z: Doppler on, w: redshift on
-    vec4 vol0;         // volumetric disk: x: half height, y: vertical falloff, z: radial falloff, w: noise scale
-    vec4 plane_pos;    // grid plane: xyz: a point on it, w: 1 on / 0 off (compiled in: GRID_PLANE)
-    vec4 plane_n;      // xyz: unit normal facing the camera, w: line spacing
-    vec4 plane_u;      // xyz: in-plane axis, w: half size
-    vec4 vol1;         // x: noise octaves, y: rotation time (speed x time), z: lit (emission scale), w: 1 blackbody / 0 colour map
-    vec4 sky;          // x: sky kind (compiled in: SKY_KIND), y: checker squares or star density, z: brightness, w: galaxy band
-    vec4 integ;        // x: tolerance, y: escape radius, z: gravity on (1/0), w: unused
-    vec4 observer;     // xyz: the camera's velocity in the static frame (world axes); w: observer kind
-    vec4 observer_r;   // xyz: unit vector from the reference hole to the camera; w: sqrt(1 - rs/r) (1: flat)
-    vec4 disk_look;    // thin disk: x: structure, y: opacity, z: speed (x Keplerian), w: unused
-    vec4 sky_m0;       // catalogue sky: rows of the world-to-galactic matrix (xyz);
-    vec4 sky_m1;       //   sky_m0.w: flux of a magnitude-0 star
-    vec4 sky_m2;
-    uvec4 counts;      // x: hole count, y: width, z: height, w: step budget
-    vec4 holes[MAX_HOLES]; // xyz: position, w: rs
+    CameraParams camera;
+    ObserverParams observer;
+    MetricParams metric;
+    IntegratorParams integrator;
+    DiskParams disk;
+    VolumeParams volume;
+    SkyParams sky;
+    PlaneParams plane;
 };
 
 layout(std430, binding = 1) readonly buffer RaymarchParamsBlock {

@@ -36,14 +36,14 @@ vec3 hash33(uvec3 v) {
 // The checker on the celestial sphere (lensing made plain): squares in
 // longitude and latitude, so lensing shows as bent lines.
 vec3 sky_checker(vec3 d) {
-    float n = P.sky.y;
+    float n = P.sky.scale;
     float phi = atan(d.z, d.x);
     float theta = acos(clamp(d.y, -1.0, 1.0));
     float u = (phi / (2.0 * 3.14159265) + 0.5) * n;
     float w = theta / 3.14159265 * (0.5 * n);
     bool odd = ((int(floor(u)) + int(floor(w))) & 1) == 1;
     vec3 c = odd ? vec3(0.85, 0.85, 0.9) : vec3(0.1, 0.14, 0.28);
-    return c * P.sky.z;
+    return c * P.sky.brightness;
 }
 
 // A deterministic star field: the sphere is cut into cells on the faces of a
@@ -105,7 +105,7 @@ vec3 sky_stars(vec3 d, float pixel_angle) {
             vec2 c = cell + vec2(i, j) * side;
             if (any(lessThan(c, vec2(0.0))) || any(greaterThanEqual(c, vec2(CELLS)))) continue;
             vec3 h = hash33(uvec3(uvec2(c), face * 7919u + 17u));
-            if (h.z > P.sky.y) continue;  // star density: the chance a cell has a star
+            if (h.z > P.sky.scale) continue;  // star density: the chance a cell has a star
             vec2 suv = ((c + 0.1 + 0.8 * h.xy) / CELLS) * 2.0 - 1.0;
             vec3 s = face_dir(face, suv);
             vec3 h2 = hash33(uvec3(uvec2(c) + 4099u, face + 101u));
@@ -129,8 +129,8 @@ vec3 sky_stars(vec3 d, float pixel_angle) {
     float lat = dot(d, gal_n);
     vec3 h3 = hash33(uvec3(uvec2(floor((uv * 0.5 + 0.5) * 12.0)), face));
     float band = exp(-lat * lat / (2.0 * 0.12 * 0.12)) * (0.75 + 0.5 * h3.x);
-    vec3 galaxy = vec3(0.9, 0.85, 0.75) * (P.sky.w * band);
-    return (sum + galaxy) * P.sky.z;
+    vec3 galaxy = vec3(0.9, 0.85, 0.75) * (P.sky.galaxy * band);
+    return (sum + galaxy) * P.sky.brightness;
 }
 
 // exp(-16 x), near enough for a soft profile: (1 - x)^16, zero past x = 1.
@@ -184,7 +184,7 @@ vec3 star_cell(ivec2 ip, vec2 o, int level, mat2 q) {
 // The Milky Way is a faint band along the galactic plane, wider and brighter
 // toward the galactic centre.
 vec3 sky_catalogue(vec3 dw, Footprint f) {
-    mat3 m = transpose(mat3(P.sky_m0.xyz, P.sky_m1.xyz, P.sky_m2.xyz));
+    mat3 m = transpose(mat3(P.sky.row0, P.sky.row1, P.sky.row2));
     vec3 d = m * dw;   // (a unit vector turned)
     vec3 ax = m * f.x, ay = m * f.y;
     float m11 = dot(ax, ax), m12 = dot(ax, ay), m22 = dot(ay, ay);
@@ -200,7 +200,7 @@ vec3 sky_catalogue(vec3 dw, Footprint f) {
     uint face;
     vec2 uv;
     vec3 ad = cube_face(d, face, uv);
-    float n0 = P.sky.y;
+    float n0 = P.sky.scale;
     // The reach is 3 STAR_SIGMA size; the level, ceil(log2(x)) for x =
     // 1.25 n0 reach. (Multiplications by reciprocals here and below:
     // divisions are dear on a CPU driver.)
@@ -244,15 +244,15 @@ vec3 sky_catalogue(vec3 dw, Footprint f) {
                + once.x * star_cell(ivec2(x1, y0), vec2(o1.x, o0.y), li, q)
                + once.y * (star_cell(ivec2(x0, y1), vec2(o0.x, o1.y), li, q)
                            + once.x * star_cell(ivec2(x1, y1), o1, li, q));
-    vec3 stars = light * (P.sky_m0.w / (6.2831853 * STAR_SIGMA * STAR_SIGMA * area));
+    vec3 stars = light * (P.sky.star_flux / (6.2831853 * STAR_SIGMA * STAR_SIGMA * area));
     float cos_l = d.x * inversesqrt(max(dot(d.xy, d.xy), 1e-12));
     float toward_centre = 0.5 + 0.5 * cos_l;
     float width = 0.07 + 0.08 * toward_centre * toward_centre;
     // exp(-z^2 / (2 width^2)) by soft_profile.
     float fall = soft_profile((1.0 / 32.0) * d.z * d.z / (width * width));
     float band = fall * (0.35 + 0.65 * toward_centre * toward_centre);
-    vec3 galaxy = vec3(0.9, 0.85, 0.75) * (P.sky.w * band);
-    return (stars + galaxy) * P.sky.z;
+    vec3 galaxy = vec3(0.9, 0.85, 0.75) * (P.sky.galaxy * band);
+    return (stars + galaxy) * P.sky.brightness;
 }
 
 // An equirectangular panorama (src/sky.rs for the convention), sampled with
@@ -261,9 +261,9 @@ vec3 sky_catalogue(vec3 dw, Footprint f) {
 vec3 sky_image(vec3 d, float pixel_angle) {
     float u = 0.5 + atan(d.z, d.x) * (1.0 / 6.2831853);
     float v = acos(clamp(d.y, -1.0, 1.0)) * (1.0 / 3.14159265);
-    float texel = 6.2831853 / max(P.sky.y, 1.0);
+    float texel = 6.2831853 / max(P.sky.scale, 1.0);
     float lod = max(log2(max(pixel_angle / texel, 1e-6)), 0.0);
-    return textureLod(sky_tex, vec2(u, v), lod).rgb * P.sky.z;
+    return textureLod(sky_tex, vec2(u, v), lod).rgb * P.sky.brightness;
 }
 
 // The grid plane behind the hole: a finite square of lines that
@@ -271,23 +271,23 @@ vec3 sky_image(vec3 d, float pixel_angle) {
 // to well under a pixel out there), drawn over the sky.
 void grid_plane(vec3 p, vec3 d, float pixel_angle, inout vec3 color) {
     if (!GRID_PLANE) return;
-    vec3 n = P.plane_n.xyz;
+    vec3 n = P.plane.normal;
     float dn = dot(d, n);
     if (dn >= -1e-6) return;                         // moving away from its face
-    float t = dot(P.plane_pos.xyz - p, n) / dn;
+    float t = dot(P.plane.position - p, n) / dn;
     vec3 q = p + t * d;
-    if (dot(q - P.holes[0].xyz, d) <= 0.0) return;   // behind the outgoing ray
-    vec3 rel = q - P.plane_pos.xyz;
-    vec3 v_axis = cross(n, P.plane_u.xyz);
-    vec2 uv = vec2(dot(rel, P.plane_u.xyz), dot(rel, v_axis));
-    if (any(greaterThan(abs(uv), vec2(P.plane_u.w)))) return;
-    vec2 cell = uv / P.plane_n.w;
+    if (dot(q - P.metric.holes[0].xyz, d) <= 0.0) return;   // behind the outgoing ray
+    vec3 rel = q - P.plane.position;
+    vec3 v_axis = cross(n, P.plane.axis);
+    vec2 uv = vec2(dot(rel, P.plane.axis), dot(rel, v_axis));
+    if (any(greaterThan(abs(uv), vec2(P.plane.half_size)))) return;
+    vec2 cell = uv / P.plane.spacing;
     vec2 dist = abs(cell - round(cell));             // 0 on a line
     // Filter the lines by the pixel's footprint on the plane (in cells,
     // unlensed): soft edges as wide as a pixel, and the mean coverage once
     // the cells shrink below a few pixels, instead of moire.
     const float HALF_WIDTH = 0.04;
-    float fp = pixel_angle * t / (abs(dn) * P.plane_n.w);
+    float fp = pixel_angle * t / (abs(dn) * P.plane.spacing);
     float aa = max(0.5 * fp, 0.01);
     vec2 cover = 1.0 - smoothstep(HALF_WIDTH - aa, HALF_WIDTH + aa, dist);
     float line = max(cover.x, cover.y);

@@ -17,39 +17,39 @@
 
 // The film look's colour map: white-yellow inside to deep orange outside.
 vec3 volume_colormap(float r) {
-    float t = clamp((r - P.disk.x) / max(P.disk.y - P.disk.x, 1e-3), 0.0, 1.0);
+    float t = clamp((r - P.disk.inner) / max(P.disk.outer - P.disk.inner, 1e-3), 0.0, 1.0);
     vec3 inner = vec3(1.0, 0.85, 0.55);
     vec3 outer = vec3(0.9, 0.35, 0.08);
-    return mix(inner, outer, sqrt(t)) * P.disk.z;
+    return mix(inner, outer, sqrt(t)) * P.disk.brightness;
 }
 
 // Density at p (0 outside the slab).
 float volume_density(vec3 p, out float r) {
-    vec3 d = p - P.holes[0].xyz;
-    vec3 n = P.disk_normal.xyz;
+    vec3 d = p - P.metric.holes[0].xyz;
+    vec3 n = P.disk.normal;
     float y = dot(d, n);
     vec3 q = d - y * n;
     r = length(q);
-    float H = P.vol0.x;
-    float r_in = P.disk.x, r_out = P.disk.y;
+    float H = P.volume.half_height;
+    float r_in = P.disk.inner, r_out = P.disk.outer;
     if (abs(y) >= H || r >= r_out || r <= 0.9 * r_in) return 0.0;
-    float dens = pow(1.0 - abs(y) / H, P.vol0.y)                 // vertical falloff
-               * pow(r_in / r, P.vol0.z)                          // radial falloff
+    float dens = pow(1.0 - abs(y) / H, P.volume.falloff_v)                 // vertical falloff
+               * pow(r_in / r, P.volume.falloff_h)                          // radial falloff
                * smoothstep(0.9 * r_in, 1.1 * r_in, r)
                * (1.0 - smoothstep(0.75 * r_out, r_out, r));
     if (dens < 1e-4) return 0.0;
     // Turn the noise field with the local Keplerian angular velocity.
-    float rs = P.holes[0].w;
-    float angle = -sqrt(0.5 * rs / (r * r * r)) * P.vol1.y;
+    float rs = P.metric.holes[0].w;
+    float angle = -sqrt(0.5 * rs / (r * r * r)) * P.disk.rotation_time;
     float ca = cos(angle), sa = sin(angle);
-    vec2 xz = vec2(dot(q, P.disk_e1.xyz), dot(q, P.disk_e2.xyz));
+    vec2 xz = vec2(dot(q, P.disk.e1), dot(q, P.disk.e2));
     xz = vec2(ca * xz.x - sa * xz.y, sa * xz.x + ca * xz.y);
-    vec3 np = vec3(xz.x, y * 4.0, xz.y) * P.vol0.w;
+    vec3 np = vec3(xz.x, y * 4.0, xz.y) * P.volume.noise_scale;
     // Fractal sum of octaves, then a contrast curve: filaments and gaps.
     // The noise volume holds octaves 1 to 3 (one fetch); octaves 4 to 6 are
     // the same volume at eight times the frequency. A loop, so a CPU driver
     // runs the second fetch only when the scene asks for it.
-    int octaves = int(P.vol1.x);
+    int octaves = int(P.volume.octaves);
     // Gradient noise's features are about 1.6 times the size of simplex
     // noise's at the same frequency (what noise_scale was tuned on).
     vec3 tc = np * (1.6 / vec3(VOLUME_NOISE_PERIOD_XZ, VOLUME_NOISE_PERIOD_Y, VOLUME_NOISE_PERIOD_XZ));
@@ -80,15 +80,15 @@ float volume_jitter = 0.5;
 // Gathers light along the chord from a to b (the general path). lambda: the photon's angular
 // momentum about the disk axis (for the Doppler shift of each sample).
 void volume_segment(vec3 a, vec3 b, float lambda, inout vec3 acc, inout float trans) {
-    vec3 n = P.disk_normal.xyz;
-    vec3 c = P.holes[0].xyz;
+    vec3 n = P.disk.normal;
+    vec3 c = P.metric.holes[0].xyz;
     float ya = dot(a - c, n), yb = dot(b - c, n);
-    float H = P.vol0.x;
+    float H = P.volume.half_height;
     if ((ya > H && yb > H) || (ya < -H && yb < -H)) return;
     float len = length(b - a);
     int count = int(clamp(ceil(len / VOLUME_DS), 1.0, 16.0));
     float ds = len / float(count);
-    float rs = P.holes[0].w;
+    float rs = P.metric.holes[0].w;
     for (int k = 0; k < count; ++k) {
         vec3 p = mix(a, b, (float(k) + volume_jitter) / float(count));
         float r;
@@ -98,12 +98,12 @@ void volume_segment(vec3 a, vec3 b, float lambda, inout vec3 acc, inout float tr
         if (VOLUME_BLACKBODY) {
             float omega = sqrt(0.5 * rs / (r * r * r));
             float g = sqrt(max(1.0 - 1.5 * rs / r, 1e-4)) / (1.0 - omega * lambda);
-            emit = disk_color(max(r, 1.0001 * P.disk.x), g * observer_g);
+            emit = disk_color(max(r, 1.0001 * P.disk.inner), g * observer_g);
         } else {
             emit = volume_colormap(r);
         }
         float sigma = dens * 0.8;
-        acc += trans * emit * (dens * P.vol1.z * ds);
+        acc += trans * emit * (dens * P.volume.lit * ds);
         trans *= exp(-sigma * ds);
     }
 }

@@ -24,7 +24,7 @@ pub use window::{Overlay, SwapchainTarget, ViewOptions};
 use crate::frame::OutputKind;
 use crate::graph::{Graph, ImageHandle};
 use crate::passes::{self, Pipelines, raymarch};
-use crate::scene::{Scene, SkyKind};
+use crate::scene::Scene;
 use crate::vk::{Access, BufferBinding, Gpu, Image, ImageBinding, ImageDesc, Validation};
 use crate::{Error, Result};
 use resources::SceneResources;
@@ -218,16 +218,13 @@ impl Renderer {
         size: (u32, u32),
         jitter: (f32, f32),
     ) -> Result<()> {
-        let mut params = raymarch::RaymarchParams::new(scene, size.0, size.1);
-        params.cam_up[3] = jitter.0;
-        params.cam_fwd[3] = jitter.1;
-        // An image sky's shader needs its panorama's width (the catalogue's
-        // grid size is set by RaymarchParams::new).
-        if let Some((_, sky)) = &self.resources.sky
-            && matches!(scene.sky.kind, SkyKind::Image | SkyKind::Cubemap)
-        {
-            params.sky[1] = sky.desc.width as f32;
-        }
+        let frame = raymarch::FrameSpec {
+            width: size.0,
+            height: size.1,
+            jitter,
+            image_sky_width: self.resources.sky.as_ref().map(|(_, sky)| sky.desc.width),
+        };
+        let params = raymarch::RaymarchParams::new(scene, &frame);
         self.slots[slot]
             .params
             .mapped_mut()?

@@ -20,11 +20,15 @@
 //! [`split_pays`] estimates the disk's share of the frame on the CPU.
 
 use ash::vk;
-use bytemuck::{Pod, Zeroable};
+
+pub mod params;
+
+pub use params::{FrameSpec, RaymarchParams};
+use params::{disk_kind, sky_kind};
 
 use super::{Pipelines, dispatch_2d, dispatch_indirect};
 use crate::graph::{BufferHandle, Graph, ImageDesc, ImageHandle, Mips};
-use crate::scene::{DiskKind, MAX_HOLES, Scene, SkyKind, VolumeColor};
+use crate::scene::{DiskKind, Scene, VolumeColor};
 use crate::vk::{Access, Descriptor};
 
 /// Constants mirrored from `shaders/include/params.glsl` (tests/layout.rs
@@ -61,174 +65,6 @@ pub enum RaymarchOutput {
     Beauty,
     /// The geodesic AOV in the README.
     Geodesic,
-}
-
-/// Parameter block of the ray march (a read-only storage buffer). Mirrors
-/// `RaymarchParams` in shaders/include/params.glsl (every member a 16-byte vec4).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Pod, Zeroable)]
-pub struct RaymarchParams {
-    pub cam_pos: [f32; 4],
-    pub cam_right: [f32; 4],
-    pub cam_up: [f32; 4],
-    pub cam_fwd: [f32; 4],
-    pub disk_normal: [f32; 4],
-    pub disk: [f32; 4],
-    pub disk_e1: [f32; 4],
-    pub disk_e2: [f32; 4],
-    pub disk_temp: [f32; 4],
-    pub vol0: [f32; 4],
-    pub plane_pos: [f32; 4],
-    pub plane_n: [f32; 4],
-    pub plane_u: [f32; 4],
-    pub vol1: [f32; 4],
-    pub sky: [f32; 4],
-    pub integ: [f32; 4],
-    pub observer: [f32; 4],
-    pub observer_r: [f32; 4],
-    pub disk_look: [f32; 4],
-    pub sky_m0: [f32; 4],
-    pub sky_m1: [f32; 4],
-    pub sky_m2: [f32; 4],
-    pub counts: [u32; 4],
-    pub holes: [[f32; 4]; MAX_HOLES],
-}
-
-fn disk_kind(scene: &Scene) -> u32 {
-    match scene.disk.kind {
-        DiskKind::None => glsl::DISK_NONE,
-        DiskKind::Thin => glsl::DISK_THIN,
-        DiskKind::Volumetric => glsl::DISK_VOLUME,
-    }
-}
-
-fn sky_kind(scene: &Scene) -> u32 {
-    match scene.sky.kind {
-        SkyKind::Black => glsl::SKY_BLACK,
-        SkyKind::Checker => glsl::SKY_CHECKER,
-        SkyKind::Stars => glsl::SKY_STARS,
-        SkyKind::Image | SkyKind::Cubemap => glsl::SKY_IMAGE,
-        SkyKind::Catalogue => glsl::SKY_CATALOGUE,
-    }
-}
-
-fn v4(v: glam::DVec3, w: f64) -> [f32; 4] {
-    [v.x as f32, v.y as f32, v.z as f32, w as f32]
-}
-
-/// r⁻³ (1 - sqrt(r_in / r)) at the Novikov-Thorne peak, the shader's normaliser.
-fn nt_profile_at_peak(r_in: f64) -> f64 {
-    let r = crate::physics::disk::peak_radius(r_in.max(1e-6));
-    r.powi(-3) * (1.0 - (r_in / r).sqrt())
-}
-
-impl RaymarchParams {
-    /// Fills the block from a scene for a `width` x `height` image.
-    pub fn new(scene: &Scene, width: u32, height: u32) -> Self {
-        let f = scene.camera.frame();
-        let mut holes = [[0.0f32; 4]; MAX_HOLES];
-        for (slot, h) in holes.iter_mut().zip(&scene.black_holes) {
-            *slot = v4(glam::DVec3::from(h.position), h.rs);
-        }
-        let disk_kind = f64::from(disk_kind(scene));
-        let d = &scene.disk;
-        let plane_n = glam::DVec3::from(scene.plane.normal).normalize();
-        // An in-plane axis: world x projected, or z if the normal is along x.
-        let mut plane_u = glam::DVec3::X - plane_n * plane_n.x;
-        if plane_u.length() < 1e-6 {
-            plane_u = glam::DVec3::Z - plane_n * plane_n.z;
-        }
-        let plane_u = plane_u.normalize();
-        let sky_m = crate::stars::world_to_galactic(
-            scene.sky.frame,
-            scene.sky.rotation_deg,
-            scene.sky.tilt_deg,
-        );
-        let sky_param = match scene.sky.kind {
-            SkyKind::Black => 0.0,
-            SkyKind::Checker => f64::from(scene.sky.squares),
-            SkyKind::Stars => scene.sky.star_density,
-            SkyKind::Catalogue => f64::from(crate::stars::GRID),
-            // The image's width (for the mip level) is filled in by the renderer.
-            SkyKind::Image | SkyKind::Cubemap => 0.0,
-        };
-        let sky_kind = sky_kind(scene) as f32;
-        let (e1, e2) = crate::physics::geodesic::disk_basis(glam::DVec3::from(scene.disk.normal));
-        let obs = scene.observer();
-        RaymarchParams {
-            cam_pos: v4(f.position, f.tan_half_fov),
-            cam_right: v4(f.right, f64::from(width) / f64::from(height)),
-            cam_up: v4(f.up, 0.0),
-            cam_fwd: v4(f.forward, 0.0),
-            disk_normal: v4(glam::DVec3::from(scene.disk.normal).normalize(), disk_kind),
-            disk: [
-                scene.disk.inner_radius as f32,
-                scene.disk.outer_radius as f32,
-                scene.disk.brightness as f32,
-                f32::from(u8::from(scene.physics.beaming)),
-            ],
-            disk_e1: v4(e1, 0.0),
-            disk_e2: v4(e2, 0.0),
-            disk_temp: [
-                scene.disk.temperature_k as f32,
-                nt_profile_at_peak(scene.disk.inner_radius) as f32,
-                f32::from(u8::from(scene.physics.doppler)),
-                f32::from(u8::from(scene.physics.gravitational_redshift)),
-            ],
-            vol0: [
-                d.height as f32,
-                d.density_v as f32,
-                d.density_h as f32,
-                d.noise_scale as f32,
-            ],
-            plane_pos: v4(
-                glam::DVec3::from(scene.plane.position),
-                f64::from(u8::from(scene.plane.enabled)),
-            ),
-            plane_n: v4(plane_n, scene.plane.spacing),
-            plane_u: v4(plane_u, scene.plane.size),
-            vol1: [
-                d.noise_octaves as f32,
-                (d.speed * scene.time) as f32,
-                d.lit as f32,
-                if d.color == VolumeColor::Blackbody {
-                    1.0
-                } else {
-                    0.0
-                },
-            ],
-            sky: [
-                sky_kind,
-                sky_param as f32,
-                scene.sky.brightness as f32,
-                scene.sky.galaxy as f32,
-            ],
-            integ: [
-                scene.quality.tolerance as f32,
-                scene.escape_radius() as f32,
-                f32::from(u8::from(scene.physics.gravity)),
-                0.0,
-            ],
-            observer: v4(obs.beta, f64::from(obs.kind as u32)),
-            observer_r: v4(obs.rhat, obs.lapse),
-            disk_look: [
-                scene.disk.structure as f32,
-                scene.disk.opacity as f32,
-                d.speed as f32,
-                0.0,
-            ],
-            sky_m0: v4(sky_m.row(0), crate::stars::FLUX_MAG0),
-            sky_m1: v4(sky_m.row(1), 0.0),
-            sky_m2: v4(sky_m.row(2), 0.0),
-            counts: [
-                scene.black_holes.len().min(MAX_HOLES) as u32,
-                width,
-                height,
-                scene.quality.steps,
-            ],
-            holes,
-        }
-    }
 }
 
 /// The images every ray march reads, kept across frames

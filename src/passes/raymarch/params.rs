@@ -1,0 +1,372 @@
+//! The ray march's parameter block: one struct of named groups (camera,
+//! observer, metric, integrator, disk, volume, sky, plane), built in one
+//! place, [`RaymarchParams::new`], from the scene and the frame
+//! ([`FrameSpec`]: size, jitter, the image sky's width), and never patched
+//! after. `shaders/include/params.glsl` mirrors it; every vec3 there is
+//! followed by a float, so each group is a whole number of 16-byte rows and
+//! std430 places each member where `#[repr(C)]` does (tests/layout.rs checks
+//! every member against the SPIR-V).
+
+use bytemuck::{Pod, Zeroable};
+use glam::DVec3;
+
+use super::glsl;
+use crate::scene::{DiskKind, MAX_HOLES, Scene, SkyKind, VolumeColor};
+
+/// `[camera]` as the shader takes it: the frame's basis and the image.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+pub struct CameraParams {
+    pub position: [f32; 3],
+    /// tan(vfov / 2).
+    pub tan_half_fov: f32,
+    pub right: [f32; 3],
+    /// Width / height.
+    pub aspect: f32,
+    pub up: [f32; 3],
+    /// Sub-pixel jitter, pixels (0: the pixel's centre).
+    pub jitter_x: f32,
+    pub forward: [f32; 3],
+    /// Sub-pixel jitter down, pixels.
+    pub jitter_y: f32,
+    /// Image width and height.
+    pub size: [u32; 2],
+    pub _pad: [u32; 2],
+}
+
+/// Who holds the camera (`physics::observer`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+pub struct ObserverParams {
+    /// Velocity in the static frame, world axes.
+    pub velocity: [f32; 3],
+    /// `ObserverKind` as a number (`OBS_*`).
+    pub kind: f32,
+    /// Unit vector from the reference hole to the camera.
+    pub radial: [f32; 3],
+    /// sqrt(1 - rs/r) at the camera (1: flat).
+    pub lapse: f32,
+}
+
+/// The holes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+pub struct MetricParams {
+    /// xyz: position, w: rs.
+    pub holes: [[f32; 4]; MAX_HOLES],
+    pub hole_count: u32,
+    /// 1 on, 0 off (straight rays).
+    pub gravity: f32,
+    pub _pad: [f32; 2],
+}
+
+/// `[quality]`: the general integrator (several holes with gravity).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+pub struct IntegratorParams {
+    pub tolerance: f32,
+    pub escape_radius: f32,
+    /// Step budget per ray.
+    pub steps: u32,
+    pub _pad: f32,
+}
+
+/// `[disk]`, the parts every disk takes, and the physics switches of its light.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+pub struct DiskParams {
+    pub normal: [f32; 3],
+    /// `DISK_*`.
+    pub kind: f32,
+    /// In-plane basis vector (azimuth 0).
+    pub e1: [f32; 3],
+    /// `speed` x time: how far the gas has turned (thin and volumetric).
+    pub rotation_time: f32,
+    /// e1 x normal (azimuth 90 degrees).
+    pub e2: [f32; 3],
+    /// Thin disk: contrast of filaments and clumps.
+    pub structure: f32,
+    pub inner: f32,
+    pub outer: f32,
+    pub brightness: f32,
+    /// Doppler beaming on (1/0).
+    pub beaming: f32,
+    /// Kelvin.
+    pub peak_temperature: f32,
+    /// The Novikov-Thorne profile at its peak (the shader's normaliser).
+    pub nt_peak: f32,
+    /// Doppler colour shift on (1/0).
+    pub doppler: f32,
+    /// Gravitational redshift on (1/0).
+    pub redshift: f32,
+    /// Thin disk: opacity at average density.
+    pub opacity: f32,
+    /// x Keplerian.
+    pub speed: f32,
+    pub _pad: [f32; 2],
+}
+
+/// The volumetric disk's gas.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+pub struct VolumeParams {
+    pub half_height: f32,
+    /// Fall of density with height (exponent).
+    pub falloff_v: f32,
+    /// Fall of density with radius (exponent).
+    pub falloff_h: f32,
+    pub noise_scale: f32,
+    pub octaves: f32,
+    /// Emission scale.
+    pub lit: f32,
+    /// 1 blackbody, 0 colour map.
+    pub blackbody: f32,
+    pub _pad: f32,
+}
+
+/// `[sky]`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+pub struct SkyParams {
+    /// `SKY_*`.
+    pub kind: f32,
+    /// Checker squares, star density, the catalogue's grid size or an image
+    /// sky's width (its mip level).
+    pub scale: f32,
+    pub brightness: f32,
+    /// The galaxy band.
+    pub galaxy: f32,
+    /// Rows of the world-to-galactic matrix.
+    pub row0: [f32; 3],
+    /// Flux of a magnitude-0 star.
+    pub star_flux: f32,
+    pub row1: [f32; 3],
+    pub _pad0: f32,
+    pub row2: [f32; 3],
+    pub _pad1: f32,
+}
+
+/// `[grid_plane]`.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+pub struct PlaneParams {
+    pub position: [f32; 3],
+    /// 1 on, 0 off.
+    pub enabled: f32,
+    /// Unit normal facing the camera.
+    pub normal: [f32; 3],
+    pub spacing: f32,
+    /// An in-plane axis.
+    pub axis: [f32; 3],
+    pub half_size: f32,
+}
+
+/// The whole block (a read-only storage buffer, written by the host).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+pub struct RaymarchParams {
+    pub camera: CameraParams,
+    pub observer: ObserverParams,
+    pub metric: MetricParams,
+    pub integrator: IntegratorParams,
+    pub disk: DiskParams,
+    pub volume: VolumeParams,
+    pub sky: SkyParams,
+    pub plane: PlaneParams,
+}
+
+/// What one frame adds to the scene.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct FrameSpec {
+    pub width: u32,
+    pub height: u32,
+    /// Sub-pixel offset of every ray, pixels (0, 0: the pixels' centres).
+    pub jitter: (f32, f32),
+    /// The width of the loaded image sky, if the scene has one.
+    pub image_sky_width: Option<u32>,
+}
+
+impl FrameSpec {
+    /// A `width` x `height` frame through the pixels' centres.
+    pub fn new(width: u32, height: u32) -> Self {
+        FrameSpec {
+            width,
+            height,
+            ..FrameSpec::default()
+        }
+    }
+}
+
+pub(super) fn disk_kind(scene: &Scene) -> u32 {
+    match scene.disk.kind {
+        DiskKind::None => glsl::DISK_NONE,
+        DiskKind::Thin => glsl::DISK_THIN,
+        DiskKind::Volumetric => glsl::DISK_VOLUME,
+    }
+}
+
+pub(super) fn sky_kind(scene: &Scene) -> u32 {
+    match scene.sky.kind {
+        SkyKind::Black => glsl::SKY_BLACK,
+        SkyKind::Checker => glsl::SKY_CHECKER,
+        SkyKind::Stars => glsl::SKY_STARS,
+        SkyKind::Image | SkyKind::Cubemap => glsl::SKY_IMAGE,
+        SkyKind::Catalogue => glsl::SKY_CATALOGUE,
+    }
+}
+
+fn v3(v: DVec3) -> [f32; 3] {
+    [v.x as f32, v.y as f32, v.z as f32]
+}
+
+fn flag(on: bool) -> f32 {
+    f32::from(u8::from(on))
+}
+
+/// r⁻³ (1 - sqrt(r_in / r)) at the Novikov-Thorne peak, the shader's normaliser.
+fn nt_profile_at_peak(r_in: f64) -> f64 {
+    let r = crate::physics::disk::peak_radius(r_in.max(1e-6));
+    r.powi(-3) * (1.0 - (r_in / r).sqrt())
+}
+
+impl RaymarchParams {
+    /// The block for `scene` (at its `time`) and one frame.
+    pub fn new(scene: &Scene, frame: &FrameSpec) -> Self {
+        RaymarchParams {
+            camera: camera(scene, frame),
+            observer: observer(scene),
+            metric: metric(scene),
+            integrator: IntegratorParams {
+                tolerance: scene.quality.tolerance as f32,
+                escape_radius: scene.escape_radius() as f32,
+                steps: scene.quality.steps,
+                _pad: 0.0,
+            },
+            disk: disk(scene),
+            volume: volume(scene),
+            sky: sky(scene, frame),
+            plane: plane(scene),
+        }
+    }
+}
+
+fn camera(scene: &Scene, frame: &FrameSpec) -> CameraParams {
+    let f = scene.camera.frame();
+    CameraParams {
+        position: v3(f.position),
+        tan_half_fov: f.tan_half_fov as f32,
+        right: v3(f.right),
+        aspect: (f64::from(frame.width) / f64::from(frame.height)) as f32,
+        up: v3(f.up),
+        jitter_x: frame.jitter.0,
+        forward: v3(f.forward),
+        jitter_y: frame.jitter.1,
+        size: [frame.width, frame.height],
+        _pad: [0; 2],
+    }
+}
+
+fn observer(scene: &Scene) -> ObserverParams {
+    let obs = scene.observer();
+    ObserverParams {
+        velocity: v3(obs.beta),
+        kind: obs.kind as u32 as f32,
+        radial: v3(obs.rhat),
+        lapse: obs.lapse as f32,
+    }
+}
+
+fn metric(scene: &Scene) -> MetricParams {
+    let mut holes = [[0.0f32; 4]; MAX_HOLES];
+    for (slot, h) in holes.iter_mut().zip(&scene.black_holes) {
+        let p = v3(DVec3::from(h.position));
+        *slot = [p[0], p[1], p[2], h.rs as f32];
+    }
+    MetricParams {
+        holes,
+        hole_count: scene.black_holes.len().min(MAX_HOLES) as u32,
+        gravity: flag(scene.physics.gravity),
+        _pad: [0.0; 2],
+    }
+}
+
+fn disk(scene: &Scene) -> DiskParams {
+    let d = &scene.disk;
+    let normal = DVec3::from(d.normal);
+    let (e1, e2) = crate::physics::geodesic::disk_basis(normal);
+    DiskParams {
+        normal: v3(normal.normalize()),
+        kind: disk_kind(scene) as f32,
+        e1: v3(e1),
+        rotation_time: (d.speed * scene.time) as f32,
+        e2: v3(e2),
+        structure: d.structure as f32,
+        inner: d.inner_radius as f32,
+        outer: d.outer_radius as f32,
+        brightness: d.brightness as f32,
+        beaming: flag(scene.physics.beaming),
+        peak_temperature: d.temperature_k as f32,
+        nt_peak: nt_profile_at_peak(d.inner_radius) as f32,
+        doppler: flag(scene.physics.doppler),
+        redshift: flag(scene.physics.gravitational_redshift),
+        opacity: d.opacity as f32,
+        speed: d.speed as f32,
+        _pad: [0.0; 2],
+    }
+}
+
+fn volume(scene: &Scene) -> VolumeParams {
+    let d = &scene.disk;
+    VolumeParams {
+        half_height: d.height as f32,
+        falloff_v: d.density_v as f32,
+        falloff_h: d.density_h as f32,
+        noise_scale: d.noise_scale as f32,
+        octaves: d.noise_octaves as f32,
+        lit: d.lit as f32,
+        blackbody: flag(d.color == VolumeColor::Blackbody),
+        _pad: 0.0,
+    }
+}
+
+fn sky(scene: &Scene, frame: &FrameSpec) -> SkyParams {
+    let s = &scene.sky;
+    let m = crate::stars::world_to_galactic(s.frame, s.rotation_deg, s.tilt_deg);
+    let scale = match s.kind {
+        SkyKind::Black => 0.0,
+        SkyKind::Checker => f64::from(s.squares),
+        SkyKind::Stars => s.star_density,
+        SkyKind::Catalogue => f64::from(crate::stars::GRID),
+        SkyKind::Image | SkyKind::Cubemap => f64::from(frame.image_sky_width.unwrap_or(0)),
+    };
+    SkyParams {
+        kind: sky_kind(scene) as f32,
+        scale: scale as f32,
+        brightness: s.brightness as f32,
+        galaxy: s.galaxy as f32,
+        row0: v3(m.row(0)),
+        star_flux: crate::stars::FLUX_MAG0 as f32,
+        row1: v3(m.row(1)),
+        _pad0: 0.0,
+        row2: v3(m.row(2)),
+        _pad1: 0.0,
+    }
+}
+
+fn plane(scene: &Scene) -> PlaneParams {
+    let gp = &scene.plane;
+    let normal = DVec3::from(gp.normal).normalize();
+    // An in-plane axis: world x projected, or z if the normal is along x.
+    let mut axis = DVec3::X - normal * normal.x;
+    if axis.length() < 1e-6 {
+        axis = DVec3::Z - normal * normal.z;
+    }
+    PlaneParams {
+        position: v3(DVec3::from(gp.position)),
+        enabled: flag(gp.enabled),
+        normal: v3(normal),
+        spacing: gp.spacing as f32,
+        axis: v3(axis.normalize()),
+        half_size: gp.size as f32,
+    }
+}
