@@ -4,7 +4,6 @@
 
 use std::mem::{offset_of, size_of};
 
-
 /// Member offsets (by member index) of the struct named `name` in a SPIR-V module.
 fn member_offsets(spirv: &[u8], name: &str) -> Vec<u32> {
     let words: Vec<u32> = spirv
@@ -298,24 +297,26 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
     assert_eq!(define(volume, "VOLUME_NOISE_PERIOD_Y"), period[1]);
     assert_eq!(period[0], period[2], "the shader has one period across");
     // The AOV's outcome codes are binding (the geodesic AOV table in the README).
-    let raymarch = include_str!("../shaders/raymarch.comp");
+    let hit = include_str!("../shaders/include/hit.glsl");
     for (name, code) in [
         ("OUT_ESCAPED", 0.0),
         ("OUT_CAPTURED", 1.0),
         ("OUT_DISK", 2.0),
         ("OUT_NO_STEPS", 3.0),
     ] {
-        assert_eq!(define(raymarch, name), code, "{name}");
+        assert_eq!(define(hit, name), code, "{name}");
     }
     // The split ray march's stages (a specialisation constant's values) and
     // the rows of its indirect dispatch.
+    let variant = include_str!("../shaders/include/variant.glsl");
     for (name, rust) in [
         ("DISK_STAGE_ALL", r::DISK_STAGE_ALL),
         ("DISK_STAGE_TRACE", r::DISK_STAGE_TRACE),
         ("DISK_STAGE_DISK", r::DISK_STAGE_DISK),
     ] {
-        assert_eq!(define(raymarch, name), f64::from(rust), "{name}");
+        assert_eq!(define(variant, name), f64::from(rust), "{name}");
     }
+    let raymarch = include_str!("../shaders/raymarch.comp");
     let row = defines(raymarch)
         .into_iter()
         .find(|(n, _)| n == "DISK_ROW")
@@ -341,7 +342,7 @@ fn specialization_constants(src: &str) -> Vec<(u32, String)> {
 fn specialization_constants_match_the_glsl_ids() {
     for (src, names) in [
         (
-            include_str!("../shaders/raymarch.comp"),
+            include_str!("../shaders/include/variant.glsl"),
             &blackhole::passes::raymarch::Variant::CONSTANT_NAMES[..],
         ),
         (

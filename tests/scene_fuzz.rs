@@ -8,10 +8,10 @@
 use std::mem::offset_of;
 
 use blackhole::Scene;
+use blackhole::passes::raymarch::FrameSpec;
 use blackhole::passes::raymarch::params::{
     CameraParams, IntegratorParams, MetricParams, RaymarchParams,
 };
-use blackhole::passes::raymarch::FrameSpec;
 use proptest::prelude::*;
 
 const DEFAULT: &str = include_str!("../src/scene/presets/default.toml");

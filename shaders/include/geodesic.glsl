@@ -5,9 +5,11 @@
 //
 // Integrated with the Dormand-Prince 5(4) embedded Runge-Kutta pair (Dormand &
 // Prince 1980) with local error control: the step shrinks near a hole and
-// grows far away. Requires params.glsl.
+// grows far away.
 #ifndef GEODESIC_GLSL
 #define GEODESIC_GLSL
+
+#include "params.glsl"
 
 vec3 accel(vec3 x, vec3 v) {
     vec3 a = vec3(0.0);

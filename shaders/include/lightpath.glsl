@@ -14,6 +14,8 @@
 #ifndef LIGHTPATH_GLSL
 #define LIGHTPATH_GLSL
 
+#include "constants.glsl"
+
 // The polynomials below are evaluated by Estrin's scheme: pairs of terms
 // combined by t^2, t^4, t^8, a tree a few products deep instead of Horner's
 // chain of one multiply-add per term. A CPU driver runs a SIMD group's lanes
@@ -342,10 +344,9 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
 // The first angle phi0 + j pi (j >= 0) inside the path's w-window `win`
 // (and before phi_end), or a huge value if there is none.
 float first_crossing_in(LightPath p, vec2 win, float phi0) {
-    const float PI_ = 3.14159265358979;
     vec2 f = (win - p.w0) * p.inv_rate;
     float lo = max(min(f.x, f.y), 0.0), hi = min(max(f.x, f.y), p.phi_end);
-    float phi = phi0 + max(ceil((lo - phi0) * (1.0 / PI_)), 0.0) * PI_;
+    float phi = phi0 + max(ceil((lo - phi0) * (1.0 / PI)), 0.0) * PI;
     return (hi >= lo && phi <= hi) ? phi : 1e30;
 }
 

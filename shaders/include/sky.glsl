@@ -1,7 +1,15 @@
-// Skies for escaped rays. Requires params.glsl, blackbody(t) for star
-// colours, and the specialization constants SKY_KIND and GRID_PLANE.
+// Skies for escaped rays: the checker, the procedural stars, an image, the
+// real catalogue, and the grid plane behind the hole.
 #ifndef SKY_GLSL
 #define SKY_GLSL
+
+#include "params.glsl"
+#include "variant.glsl"
+#include "blackbody.glsl"
+
+// The image sky's panorama with mips, the catalogue's star grid with mips
+// (src/stars.rs), or the colour table, unused, for the other skies.
+layout(binding = 3) uniform sampler2D sky_tex;
 
 // Steps of a star cell's packed light place along u (PLACE_STEPS in
 // src/stars.rs).

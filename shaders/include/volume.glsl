@@ -5,10 +5,17 @@
 // outer ones). The noise is read from a precomputed tileable volume
 // (src/render/noise.rs, `volume_noise`). Light is gathered by
 // emission-absorption: colour += T * emission * ds, T *= exp(-sigma ds).
-// Requires params.glsl, the volume_noise sampler, VOLUME_BLACKBODY and
-// disk_color() / disk shift helpers.
 #ifndef VOLUME_GLSL
 #define VOLUME_GLSL
+
+#include "params.glsl"
+#include "variant.glsl"
+#include "ray_state.glsl"
+#include "disk.glsl"
+
+// The volumetric disk's noise volume, three octaves in r, g, b
+// (src/render/noise.rs, `volume_noise`).
+layout(binding = 5) uniform sampler3D volume_noise;
 
 // The noise volume's period in lattice units of its first octave
 // (VOLUME_NOISE_PERIOD in src/render/noise.rs, checked by tests/layout.rs).
@@ -65,17 +72,8 @@ float volume_density(vec3 p, out float r) {
     return dens * clamp(0.55 + 0.9 * noise, 0.0, 2.0) * 3.0;
 }
 
-// What turns g seen from infinity into g seen by the camera's observer
-// (src/physics/observer.rs), set by main().
-float observer_g = 1.0;
-
 // Sample spacing along a ray, in rs.
 const float VOLUME_DS = 0.2;
-
-// Per-pixel offset of the samples within their spacing, set by main(): a
-// fixed spacing would show as rings where rays run along the density
-// gradient; a hashed offset turns them into fine, stable grain.
-float volume_jitter = 0.5;
 
 // Gathers light along the chord from a to b (the general path). lambda: the photon's angular
 // momentum about the disk axis (for the Doppler shift of each sample).

@@ -25,7 +25,7 @@ pub const NOISE_SIZE: u32 = 256;
 /// The thin disk's structure: tileable value noise, four octaves of a
 /// periodic lattice (8, 16, 32, 64 cells across) with quintic smoothing,
 /// as 8-bit texels (mean about 0.5). The ray march reads it in the
-/// co-moving angle and log radius (raymarch.comp, `thin_disk_density`):
+/// co-moving angle and log radius (disk.glsl, `thin_disk_density`):
 /// one filtered fetch instead of octaves of procedural noise per pixel.
 pub fn disk_noise() -> Vec<u8> {
     let n = NOISE_SIZE as usize;
@@ -77,7 +77,7 @@ pub const VOLUME_NOISE_PERIOD: [f64; 3] = [16.0, 8.0, 16.0];
 /// noise (lattice spacing 1, 1/2 and 1/4 noise units), one per channel
 /// (r, g, b; a unused), each in [0, 1] around 0.5. The ray march reads the
 /// volume with a repeating trilinear sampler and sums the channels it needs
-/// (raymarch.comp, `volume_density`): one fetch for three octaves instead of
+/// (volume.glsl, `volume_density`): one fetch for three octaves instead of
 /// three evaluations of simplex noise per sample, and a second fetch at
 /// eight times the frequency for octaves four to six.
 pub fn volume_noise() -> Vec<u8> {

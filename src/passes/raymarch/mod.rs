@@ -210,7 +210,7 @@ impl Variant {
     }
 
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
-    /// (tests/layout.rs checks them against raymarch.comp).
+    /// (tests/layout.rs checks them against include/variant.glsl).
     pub const CONSTANT_NAMES: [&'static str; 11] = [
         "ONE_HOLE",
         "DISK_KIND",

@@ -1,0 +1,252 @@
+// One hole with gravity: the closed-form light path (lightpath.glsl), its
+// thin-disk crossings on the line of nodes, the volumetric slabs along it and
+// the light's travel time. trace_planar() is this metric's path.
+#ifndef METRIC_SCHWARZSCHILD_GLSL
+#define METRIC_SCHWARZSCHILD_GLSL
+
+#include "constants.glsl"
+#include "params.glsl"
+#include "variant.glsl"
+#include "ray_state.glsl"
+#include "lightpath.glsl"
+#include "hit.glsl"
+#include "disk.glsl"
+#include "volume.glsl"
+
+// The volumetric slab around one disk-plane crossing of a closed-form path:
+// the angles where |height| < H, from the crossing's radius and the tilt of
+// the orbit plane (widened for the path's curvature). Four chords between
+// five points of the exact path carry VOLUME_SAMPLES samples spread evenly
+// along them, offset by the pixel's jitter: a fixed count, because on a CPU
+// driver a SIMD group runs as many samples as its longest ray would take, and
+// the jitter turns the coarser spacing into fine grain that the window's
+// accumulation and `render --spp` average away.
+const int VOLUME_SAMPLES = 12;
+
+void volume_crossing(LightPath path, float phi_j, float tilt, vec2 inside, vec3 c, vec3 e1,
+                     vec3 e2, float rs, float lambda, inout Hit hit) {
+    float H = P.volume.half_height;
+    float r_j = rs / path_u(path, clamp(phi_j, 0.0, path.phi_end));
+    // At most half-way to the neighbouring crossings, so no angle is counted
+    // twice when the path stays in the slab from one crossing to the next.
+    float half_width = min(1.3 * asin(min(H / max(tilt * r_j, 1e-6), 1.0)), 0.5 * PI);
+    // Only where the path is inside the outer radius: the gas ends there,
+    // and samples spread over a path running off to infinity would miss it.
+    float a = max(phi_j - half_width, inside.x);
+    float b = min(phi_j + half_width, inside.y);
+    if (b <= a) return;
+    vec3 pts[5];
+    for (int k = 0; k < 5; ++k) {
+        float phi = mix(a, b, 0.25 * float(k));
+        float u = max(path_u(path, phi), 1e-6);
+        pts[k] = c + (rs / u) * (cos(phi) * e1 + sin(phi) * e2);
+    }
+    vec4 len = vec4(length(pts[1] - pts[0]), length(pts[2] - pts[1]),
+                    length(pts[3] - pts[2]), length(pts[4] - pts[3]));
+    vec4 ends = vec4(len.x, len.x + len.y, len.x + len.y + len.z, len.x + len.y + len.z + len.w);
+    float ds = ends.w / float(VOLUME_SAMPLES);
+    for (int s = 0; s < VOLUME_SAMPLES; ++s) {
+        float t = (float(s) + volume_jitter) * ds;
+        // Which chord holds t, and where along it (selects, not dynamic
+        // indexing: an index a masked-off lane computes must stay in range).
+        bvec3 past = greaterThanEqual(vec3(t), ends.xyz);
+        float start = past.z ? ends.z : past.y ? ends.y : past.x ? ends.x : 0.0;
+        float l = past.z ? len.w : past.y ? len.z : past.x ? len.y : len.x;
+        vec3 p0 = past.z ? pts[3] : past.y ? pts[2] : past.x ? pts[1] : pts[0];
+        vec3 p1 = past.z ? pts[4] : past.y ? pts[3] : past.x ? pts[2] : pts[1];
+        vec3 p = mix(p0, p1, clamp((t - start) / max(l, 1e-9), 0.0, 1.0));
+        float r;
+        float dens = volume_density(p, r);
+        vec3 emit;
+        if (VOLUME_BLACKBODY) {
+            float omega = sqrt(0.5 * rs / (r * r * r));
+            float g = sqrt(max(1.0 - 1.5 * rs / r, 1e-4)) / (1.0 - omega * lambda);
+            emit = disk_color(max(r, 1.0001 * P.disk.inner), g * observer_g);
+        } else {
+            emit = volume_colormap(r);
+        }
+        hit.glow += hit.trans * emit * (dens * P.volume.lit * ds);
+        hit.trans *= exp(-dens * 0.8 * ds);
+    }
+}
+
+const int VOLUME_CROSSINGS = 4;
+
+// Coordinate time the light takes from angle phi on the path back to the
+// camera (phi = 0), in the units of the scene (c = 1): the integral of dt/dphi = r^2 / (b (1 - rs/r))
+// by Simpson's rule over eight intervals of the exact path. Only the
+// differences across the disk matter (what turns where while the light is
+// on its way), and those are good to a few per cent.
+float light_travel_time(LightPath path, float phi, float b, float rs) {
+    const int N = 8;
+    float h = phi / float(N);
+    float sum = 0.0;
+    for (int i = 0; i <= N; ++i) {
+        float u = max(path_u(path, h * float(i)), 1e-6);
+        float r = rs / u;
+        float f = r * r / (b * max(1.0 - u, 1e-3));
+        float w = (i == 0 || i == N) ? 1.0 : ((i & 1) == 1 ? 4.0 : 2.0);
+        sum += w * f;
+    }
+    return sum * h / 3.0;
+}
+
+// The thin disk's first crossing inside the annulus from angle `next` on
+// (advanced past it): its light added to the hit, weighted by its opacity.
+// True when the ray ends there (opaque, or the AOV's first hit).
+//
+// Every crossing lies on the line of nodes (where the orbit plane meets the
+// disk plane), at angle phi0 + j pi: its direction from the hole is
+// (-1)^j `node`, and its azimuth az0 + j pi, so no sine, cosine or
+// arctangent is needed per crossing.
+bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 node, float az0,
+                   float rs, float lambda, float b_imp, inout Hit hit) {
+    float phi = min(first_crossing_in(path, path.win_a, next),
+                    first_crossing_in(path, path.win_b, next));
+    if (phi >= 1e29) {
+        next = 1e30;
+        return false;
+    }
+    next = phi + PI;
+    float u = path_u(path, phi);
+    float r = rs / u;
+    // The windows' edges are rounded; the radius decides.
+    if (r < P.disk.inner || r > P.disk.outer) return false;
+    float j = round((phi - phi0) * (1.0 / PI));
+    float odd = j - 2.0 * floor(0.5 * j);
+    vec3 pos = c + (r * (1.0 - 2.0 * odd)) * node;
+    // Keplerian omega = sqrt(rs / (2 r^3)) and 1.5 rs / r, from u = rs / r.
+    float omega = u * sqrt(0.5 * u) * (1.0 / rs);
+    float g = sqrt(max(1.0 - 1.5 * u, 0.0)) / (1.0 - omega * lambda);
+#ifdef GEODESIC_AOV
+    hit.outcome = OUT_DISK;
+    hit.pos = pos;
+    hit.g = g;
+    return true;
+#else
+    float t = P.disk.rotation_time;
+    if (LIGHT_DELAY) t -= P.disk.speed * light_travel_time(path, phi, b_imp, rs);
+    // (u and omega at hand: no division or square root again.)
+    float dens = THIN_STRUCTURE ? thin_disk_density_at(u, omega, az0 + odd * PI, t) : 1.0;
+    float alpha = clamp(P.disk.opacity * dens, 0.0, 1.0);
+    hit.glow += hit.trans * alpha * dens * disk_color(r, g * observer_g);
+    hit.trans *= 1.0 - alpha;
+    if (hit.trans < 0.003) {
+        hit.outcome = OUT_CAPTURED;  // opaque: nothing behind shows
+        return true;
+    }
+    return false;
+#endif
+}
+
+// One hole: the path lies in the plane of the hole, the camera and the ray,
+// and its shape u(phi) is known in closed form (lightpath.glsl). Disk
+// crossings are where the orbit plane meets the disk plane (phi_0 + k pi),
+// u there straight from the formula; escape and capture come from the total
+// sweep; no steps.
+Hit trace_planar(vec3 x, vec3 d) {
+    Hit hit;
+    hit.outcome = OUT_NO_STEPS;
+    hit.pos = vec3(0.0);
+    hit.dir = d;
+    hit.g = 0.0;
+    hit.glow = vec3(0.0);
+    hit.trans = 1.0;
+    hit.disk_ahead = false;
+    vec3 c = P.metric.holes[0].xyz;
+    float rs = P.metric.holes[0].w;
+    vec3 rel = x - c;
+    float r0 = length(rel), ir0 = 1.0 / r0;
+    vec3 e1 = rel * ir0;
+    vec3 nrm = cross(e1, d);
+    float sn = length(nrm);
+    if (sn < 1e-7) {
+        // A radial ray: straight in (captured) or straight out (escaped).
+        hit.outcome = dot(d, e1) < 0.0 ? OUT_CAPTURED : OUT_ESCAPED;
+        hit.pos = x;
+        return hit;
+    }
+    nrm *= 1.0 / sn;
+    vec3 e2 = cross(nrm, e1);
+    float u0 = rs * ir0;
+    float du = -(dot(d, e1) / dot(d, e2)) * u0;
+    // The thin disk's annulus in u (anything for other disks).
+    float u_lo = rs / max(P.disk.outer, 1e-6), u_hi = rs / max(P.disk.inner, 1e-6);
+    LightPath path = light_path(u0, du, u_lo, min(u_hi, 1.0));
+    // Impact parameter b (world units) and the photon's angular momentum
+    // about the disk axis (the ray runs backwards: -nrm).
+    float b_imp = rs * inversesqrt(max(du * du + u0 * u0 * (1.0 - u0), 1e-30));
+    vec3 N = P.disk.normal;
+    float lambda = -dot(nrm, N) * b_imp;
+
+    const int kind = DISK_KIND;
+    float na = dot(e1, N), nb = dot(e2, N);
+    float tilt = length(vec2(na, nb));
+    if (kind != DISK_NONE && tilt > 1e-6) {
+        float phi0 = atan(-na, nb);       // a cos(phi) + b sin(phi) = 0
+        if (kind == DISK_THIN) {
+            // The plane crossings inside the annulus: the first crossing
+            // angle in either window where u is in [rs/outer, rs/inner]; one
+            // evaluation of the path each. Where the disk is thin (its
+            // structure, its opacity) the light behind comes through: the
+            // next crossing (THIN_CROSSINGS = 2), then the sky.
+            // A loop, not two calls: on a CPU driver a branch costs every
+            // lane, taken or not, but a loop's later turns run only while a
+            // lane of the SIMD group still needs them (the first always runs).
+            float next = phi0 <= 1e-6 ? phi0 + PI : phi0;  // the next crossing ahead
+            if (DISK_STAGE == DISK_STAGE_TRACE) {
+                // Left to the disk pass: any crossing in the windows.
+                hit.disk_ahead = min(first_crossing_in(path, path.win_a, next),
+                                     first_crossing_in(path, path.win_b, next)) < 1e29;
+            } else {
+                vec3 node = (nb * e1 - na * e2) / tilt;      // cos(phi0) e1 + sin(phi0) e2
+                float az0 = THIN_STRUCTURE ? disk_azimuth(c + node) : 0.0;
+                for (int k = 0; k < THIN_CROSSINGS; ++k) {
+                    if (thin_crossing(path, next, phi0, c, node, az0, rs, lambda, b_imp, hit)) return hit;
+                    if (next >= 1e29) break;
+                }
+            }
+        } else if (volumetric()) {
+            // From the crossing behind the camera when the camera is in the
+            // slab (the same for every pixel, so no divergence), else from the
+            // one ahead; four in all. Later slabs are the thin rings of rays
+            // that wind, and every extra one costs the whole SIMD group.
+            bool camera_in_slab = abs(dot(x - c, N)) < 1.5 * P.volume.half_height;
+            float phi = camera_in_slab ? phi0 - PI : (phi0 <= 1e-6 ? phi0 + PI : phi0);
+            // The angles where the path is inside the outer radius (u >= u_lo):
+            // scattered, between the annulus windows' outer ends; plunging,
+            // from the first window on; trapped rays never leave it.
+            vec2 w_in = path.kind == PATH_SCATTERED ? vec2(path.win_a.x, path.win_b.y)
+                      : vec2(path.win_a.x, 1e30);
+            vec2 f_in = (w_in - path.w0) / path.rate;
+            vec2 inside = path.kind == PATH_TRAPPED ? vec2(0.0, path.phi_end)
+                        : vec2(max(min(f_in.x, f_in.y), 0.0), min(max(f_in.x, f_in.y), path.phi_end));
+            // The test at the end of the body, as in carlson_rf4: a CPU
+            // driver runs the first body for every SIMD group anyway (a slab
+            // past the path's end adds nothing), and a test before the body
+            // would run one body more than the longest lane needs.
+            for (int j = 0; j < VOLUME_CROSSINGS; ++j) {
+                volume_crossing(path, phi, tilt, inside, c, e1, e2, rs, lambda, hit);
+                if (hit.trans < 0.003) {
+                    hit.outcome = OUT_CAPTURED;  // opaque: nothing behind shows
+                    return hit;
+                }
+                phi += PI;
+                if (phi - PI >= inside.y) break;
+            }
+        }
+    }
+    if (path.escapes) {
+        float phi = path.phi_end;
+        hit.outcome = OUT_ESCAPED;
+        vec2 cs = cos_sin_precise(phi);
+        hit.dir = cs.x * e1 + cs.y * e2;
+        // A point on the asymptote: it passes the hole at distance b.
+        hit.pos = c + b_imp * cross(hit.dir, nrm);
+    } else {
+        hit.outcome = OUT_CAPTURED;
+    }
+    return hit;
+}
+
+#endif

@@ -1,0 +1,16 @@
+// What main() sets once per pixel before the path is traced, and the
+// shading along the path reads: the observer's factor on redshifts and the
+// volume's sample offset.
+#ifndef RAY_STATE_GLSL
+#define RAY_STATE_GLSL
+
+// What turns g seen from infinity into g seen by the camera's observer
+// (src/physics/observer.rs), set by pixel_ray() (camera.glsl).
+float observer_g = 1.0;
+
+// Per-pixel offset of the volume's samples within their spacing, set by
+// main(): a fixed spacing would show as rings where rays run along the
+// density gradient; a hashed offset turns them into fine, stable grain.
+float volume_jitter = 0.5;
+
+#endif
