@@ -8,6 +8,22 @@
 #include "params.glsl"
 #include "blackbody.glsl"
 
+// The redshift g = nu_obs / nu_emit, seen from far away, of light from an
+// emitter on a circular Keplerian orbit: sqrt(1 - 1.5 rs / r) / (1 - Omega
+// lambda), with Omega = sqrt(rs / (2 r^3)) its angular velocity and lambda
+// the photon's angular momentum about the disk's axis per unit energy (the
+// conventions in the README, "Physics"). The one place the formula is
+// written: callers pass 1 - 1.5 rs / r and Omega as they have them at hand,
+// and `least` keeps the root real inside the photon orbit (gas).
+float emitter_g(float one_minus_15u, float omega, float lambda, float least) {
+    return sqrt(max(one_minus_15u, least)) / (1.0 - omega * lambda);
+}
+
+// The Keplerian angular velocity at radius r.
+float keplerian_omega(float rs, float r) {
+    return sqrt(0.5 * rs / (r * r * r));
+}
+
 // The thin disk's tileable noise (src/render/noise.rs, `disk_noise`).
 layout(binding = 4) uniform sampler2D disk_noise;
 
@@ -57,7 +73,7 @@ float thin_disk_density_at(float u, float omega, float az, float t) {
 // The same from the radius (u = rs / r, omega Keplerian).
 float thin_disk_density(float r, float az, float t) {
     float rs = P.metric.holes[0].w;
-    return thin_disk_density_at(rs / r, sqrt(0.5 * rs / (r * r * r)), az, t);
+    return thin_disk_density_at(rs / r, keplerian_omega(rs, r), az, t);
 }
 
 // Azimuth of a point in the disk's frame (the AOV's convention).
@@ -85,8 +101,7 @@ float disk_redshift(vec3 p, vec3 x, vec3 v) {
     float bend = P.metric.gravity > 0.5 ? rs * dot(hv, hv) / (rx * rx * rx) : 0.0;
     float vinf = sqrt(max(dot(v, v) - bend, 1e-20));
     float lambda = dot(cross(d, -v), P.disk.normal) / vinf;
-    float omega = sqrt(0.5 * rs / (r * r * r));
-    return sqrt(max(1.0 - 1.5 * rs / r, 0.0)) / (1.0 - omega * lambda);
+    return emitter_g(1.0 - 1.5 * rs / r, keplerian_omega(rs, r), lambda, 0.0);
 }
 
 #endif

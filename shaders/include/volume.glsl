@@ -47,7 +47,7 @@ float volume_density(vec3 p, out float r) {
     if (dens < 1e-4) return 0.0;
     // Turn the noise field with the local Keplerian angular velocity.
     float rs = P.metric.holes[0].w;
-    float angle = -sqrt(0.5 * rs / (r * r * r)) * P.disk.rotation_time;
+    float angle = -keplerian_omega(rs, r) * P.disk.rotation_time;
     float ca = cos(angle), sa = sin(angle);
     vec2 xz = vec2(dot(q, P.disk.e1), dot(q, P.disk.e2));
     xz = vec2(ca * xz.x - sa * xz.y, sa * xz.x + ca * xz.y);
@@ -75,6 +75,15 @@ float volume_density(vec3 p, out float r) {
 // Sample spacing along a ray, in rs.
 const float VOLUME_DS = 0.2;
 
+// The light the gas at radius r emits toward a photon of angular momentum
+// lambda: the blackbody at its shifted temperature (as the thin disk), or
+// the film's colour map.
+vec3 volume_emission(float r, float rs, float lambda) {
+    if (!VOLUME_BLACKBODY) return volume_colormap(r);
+    float g = emitter_g(1.0 - 1.5 * rs / r, keplerian_omega(rs, r), lambda, 1e-4);
+    return disk_color(max(r, 1.0001 * P.disk.inner), g * observer_g);
+}
+
 // Gathers light along the chord from a to b (the general path). lambda: the photon's angular
 // momentum about the disk axis (for the Doppler shift of each sample).
 void volume_segment(vec3 a, vec3 b, float lambda, inout vec3 acc, inout float trans) {
@@ -92,14 +101,7 @@ void volume_segment(vec3 a, vec3 b, float lambda, inout vec3 acc, inout float tr
         float r;
         float dens = volume_density(p, r);
         if (dens <= 0.0) continue;
-        vec3 emit;
-        if (VOLUME_BLACKBODY) {
-            float omega = sqrt(0.5 * rs / (r * r * r));
-            float g = sqrt(max(1.0 - 1.5 * rs / r, 1e-4)) / (1.0 - omega * lambda);
-            emit = disk_color(max(r, 1.0001 * P.disk.inner), g * observer_g);
-        } else {
-            emit = volume_colormap(r);
-        }
+        vec3 emit = volume_emission(r, rs, lambda);
         float sigma = dens * 0.8;
         acc += trans * emit * (dens * P.volume.lit * ds);
         trans *= exp(-sigma * ds);

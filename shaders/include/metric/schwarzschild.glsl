@@ -57,14 +57,7 @@ void volume_crossing(LightPath path, float phi_j, float tilt, vec2 inside, vec3 
         vec3 p = mix(p0, p1, clamp((t - start) / max(l, 1e-9), 0.0, 1.0));
         float r;
         float dens = volume_density(p, r);
-        vec3 emit;
-        if (VOLUME_BLACKBODY) {
-            float omega = sqrt(0.5 * rs / (r * r * r));
-            float g = sqrt(max(1.0 - 1.5 * rs / r, 1e-4)) / (1.0 - omega * lambda);
-            emit = disk_color(max(r, 1.0001 * P.disk.inner), g * observer_g);
-        } else {
-            emit = volume_colormap(r);
-        }
+        vec3 emit = volume_emission(r, rs, lambda);
         hit.glow += hit.trans * emit * (dens * P.volume.lit * ds);
         hit.trans *= exp(-dens * 0.8 * ds);
     }
@@ -117,7 +110,7 @@ bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 no
     vec3 pos = c + (r * (1.0 - 2.0 * odd)) * node;
     // Keplerian omega = sqrt(rs / (2 r^3)) and 1.5 rs / r, from u = rs / r.
     float omega = u * sqrt(0.5 * u) * (1.0 / rs);
-    float g = sqrt(max(1.0 - 1.5 * u, 0.0)) / (1.0 - omega * lambda);
+    float g = emitter_g(1.0 - 1.5 * u, omega, lambda, 0.0);
 #ifdef GEODESIC_AOV
     hit.outcome = OUT_DISK;
     hit.pos = pos;
