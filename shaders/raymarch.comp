@@ -88,7 +88,8 @@ void disk_pass() {
     if (i >= disk_list.count) return;
     uint packed = disk_list.px[i];
     ivec2 px = ivec2(packed & 0xffffu, packed >> 16u);
-    Hit hit = trace_planar(P.camera.position, pixel_ray(uvec2(px)));
+    PixelRay ray = camera_ray(uvec2(px));
+    Hit hit = trace_planar(ray.origin, ray.dir);
     vec3 behind = hit.trans < 0.003 ? vec3(0.0) : imageLoad(out_img, px).rgb;
     imageStore(out_img, px, vec4(storable(hit.glow + hit.trans * behind), 1.0));
 }
@@ -120,16 +121,15 @@ void main() {
     if (px.x >= w || px.y >= hgt) return;
 #endif
 
-    vec3 dir = pixel_ray(px);
-    float tan_half = P.camera.tan_half_fov;
+    PixelRay ray = camera_ray(px);
 
     // The volume's sample offset: per pixel, and per accumulated frame (salted
     // by the sub-pixel jitter, zero for a single offscreen frame) so the
     // window's accumulation averages the grain away.
     volume_jitter = hash33(uvec3(px, 7u + floatBitsToUint(P.camera.jitter_x) + 3u * floatBitsToUint(P.camera.jitter_y))).x;
-    Hit hit = ONE_HOLE ? trace_planar(P.camera.position, dir)
-            : STRAIGHT ? trace_straight(P.camera.position, dir)
-            : trace(P.camera.position, dir);
+    Hit hit = ONE_HOLE ? trace_planar(ray.origin, ray.dir)
+            : STRAIGHT ? trace_straight(ray.origin, ray.dir)
+            : trace(ray.origin, ray.dir);
     hit.g *= observer_g;
 #ifdef GEODESIC_AOV
     vec4 aov = vec4(0.0, 0.0, 0.0, float(hit.outcome));
@@ -144,7 +144,7 @@ void main() {
     imageStore(out_img, ivec2(px), aov);
 #else
     vec3 color = vec3(0.0);
-    float pixel_angle = 2.0 * tan_half / float(hgt);
+    float pixel_angle = ray.angle;
     // The pixel's footprint on the sky: the change of the final direction
     // from one pixel to the next, across and down. Unlensed, pixel_angle in
     // two directions at right angles to it.

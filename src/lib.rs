@@ -14,6 +14,7 @@
 #![allow(clippy::too_many_arguments)]
 
 pub mod app;
+pub mod camera;
 pub mod cli;
 pub mod error;
 pub mod frame;

@@ -5,7 +5,7 @@
 #define RAY_STATE_GLSL
 
 // What turns g seen from infinity into g seen by the camera's observer
-// (src/physics/observer.rs), set by pixel_ray() (camera.glsl).
+// (src/physics/observer.rs), set by camera_ray() (camera.glsl).
 float observer_g = 1.0;
 
 // Per-pixel offset of the volume's samples within their spacing, set by

@@ -90,7 +90,7 @@ impl Orbit {
     pub fn pan(&mut self, dx: f64, dy: f64, height: f64) {
         let cam = self.camera();
         let f = cam.frame();
-        let scale = 2.0 * self.distance * f.tan_half_fov / height.max(1.0);
+        let scale = self.distance * f.pixel_angle(height.max(1.0) as u32);
         self.target += (-dx * f.right + dy * f.up) * scale;
     }
 }

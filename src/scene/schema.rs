@@ -4,6 +4,8 @@
 use std::path::Path;
 
 use glam::DVec3;
+
+pub use crate::camera::CameraFrame;
 use serde::Deserialize;
 
 use super::animation::Animation;
@@ -34,44 +36,15 @@ impl Default for Camera {
     }
 }
 
-/// An orthonormal camera frame, by the binding convention.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct CameraFrame {
-    pub position: DVec3,
-    pub forward: DVec3,
-    pub right: DVec3,
-    pub up: DVec3,
-    /// tan(vfov / 2).
-    pub tan_half_fov: f64,
-}
-
 impl Camera {
-    /// `forward = normalize(look_at - position)`, `right = normalize(cross(up,
-    /// forward))`, `cam_up = cross(forward, right)`.
+    /// The camera's frame (src/camera: the binding convention).
     pub fn frame(&self) -> CameraFrame {
-        let position = DVec3::from(self.position);
-        let forward = (DVec3::from(self.look_at) - position).normalize();
-        let right = DVec3::from(self.up).cross(forward).normalize();
-        let up = forward.cross(right);
-        CameraFrame {
-            position,
-            forward,
-            right,
-            up,
-            tan_half_fov: (self.vfov_deg.to_radians() * 0.5).tan(),
-        }
-    }
-}
-
-impl CameraFrame {
-    /// The unit direction of the ray through the centre of pixel (`col`, `row`)
-    /// of a `width` x `height` image, row 0 at the top.
-    pub fn ray_dir(&self, col: u32, row: u32, width: u32, height: u32) -> DVec3 {
-        let aspect = f64::from(width) / f64::from(height);
-        let sx =
-            (2.0 * (f64::from(col) + 0.5) / f64::from(width) - 1.0) * self.tan_half_fov * aspect;
-        let sy = (1.0 - 2.0 * (f64::from(row) + 0.5) / f64::from(height)) * self.tan_half_fov;
-        (self.forward + sx * self.right + sy * self.up).normalize()
+        CameraFrame::new(
+            DVec3::from(self.position),
+            DVec3::from(self.look_at),
+            DVec3::from(self.up),
+            self.vfov_deg,
+        )
     }
 }
 
