@@ -28,6 +28,7 @@ pub mod scene;
 pub mod settings;
 pub mod shaders;
 pub mod sky;
+pub mod spacetime;
 pub mod stars;
 pub mod vk;
 

@@ -251,12 +251,10 @@ impl Scene {
 
     /// The camera's observer (the pixel-to-ray mapping and its redshift).
     pub fn observer(&self) -> crate::physics::observer::Observer {
-        crate::physics::observer::Observer::new(
+        crate::spacetime::Spacetime::of(self).observer(
             self.camera.observer,
             DVec3::from(self.camera.position),
-            &self.physics_holes(),
             DVec3::from(self.disk.normal),
-            self.physics.gravity,
         )
     }
 }

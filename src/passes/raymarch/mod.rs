@@ -29,6 +29,7 @@ use params::{disk_kind, sky_kind};
 use super::{Pipelines, dispatch_2d, dispatch_indirect};
 use crate::graph::{BufferHandle, Graph, ImageDesc, ImageHandle, Mips};
 use crate::scene::{DiskKind, Scene, VolumeColor};
+use crate::spacetime::{GpuPath, Spacetime};
 use crate::vk::{Access, Descriptor};
 
 /// Constants mirrored from `shaders/include/params.glsl` (tests/layout.rs
@@ -109,11 +110,8 @@ pub const SPLIT_MAX_DISK_SHARE: f64 = 0.3;
 /// [`SPLIT_MAX_DISK_SHARE`]. (Asked only through
 /// [`crate::render::Features::splits`], where the device splits at all.)
 pub fn split_pays(scene: &Scene, width: u32, height: u32) -> bool {
-    let holes = scene.physics_holes();
-    let (Some(hole), DiskKind::Thin) = (holes.first(), scene.disk.kind) else {
-        return false;
-    };
-    if holes.len() != 1 || !scene.physics.gravity {
+    let spacetime = Spacetime::of(scene);
+    if spacetime.gpu_path() != GpuPath::ClosedForm || scene.disk.kind != DiskKind::Thin {
         return false;
     }
     let disk = crate::physics::Disk {
@@ -131,8 +129,7 @@ pub fn split_pays(scene: &Scene, width: u32, height: u32) -> bool {
             let x = ((2 * col + 1) * width / (2 * cols)).min(width - 1);
             let y = ((2 * row + 1) * height / (2 * rows)).min(height - 1);
             let d = observer.coordinate_direction(frame.ray_dir(x, y, width, height));
-            let outcome =
-                crate::physics::closed_form::trace_closed(hole, Some(&disk), frame.position, d);
+            let outcome = spacetime.trace(Some(&disk), frame.position, d, &Default::default());
             if matches!(outcome, crate::physics::Outcome::Disk { .. }) {
                 on_disk += 1;
             }
@@ -176,9 +173,10 @@ pub struct Variant {
 impl Variant {
     /// The variant a scene needs.
     pub fn of(scene: &Scene, aov: bool) -> Variant {
+        let path = Spacetime::of(scene).gpu_path();
         Variant {
             aov,
-            one_hole: scene.black_holes.len() == 1 && scene.physics.gravity,
+            one_hole: path == GpuPath::ClosedForm,
             disk: disk_kind(scene),
             sky: sky_kind(scene),
             plane: scene.plane.enabled,
@@ -190,7 +188,7 @@ impl Variant {
                 1
             },
             volume_blackbody: scene.disk.color == VolumeColor::Blackbody,
-            straight: !scene.physics.gravity,
+            straight: path == GpuPath::Straight,
             disk_stage: glsl::DISK_STAGE_ALL,
             observer_moves: scene.observer().beta != glam::DVec3::ZERO,
         }

@@ -12,6 +12,7 @@ use glam::DVec3;
 
 use super::glsl;
 use crate::scene::{DiskKind, MAX_HOLES, Scene, SkyKind, VolumeColor};
+use crate::spacetime::{GpuPath, Spacetime};
 
 /// `[camera]` as the shader takes it: the frame's basis and the image.
 #[repr(C)]
@@ -235,7 +236,7 @@ impl RaymarchParams {
         RaymarchParams {
             camera: camera(scene, frame),
             observer: observer(scene),
-            metric: metric(scene),
+            metric: metric(&Spacetime::of(scene)),
             integrator: IntegratorParams {
                 tolerance: scene.quality.tolerance as f32,
                 escape_radius: scene.escape_radius() as f32,
@@ -276,16 +277,17 @@ fn observer(scene: &Scene) -> ObserverParams {
     }
 }
 
-fn metric(scene: &Scene) -> MetricParams {
+/// The spacetime's part of the block: its holes, and whether rays bend.
+fn metric(spacetime: &Spacetime) -> MetricParams {
     let mut holes = [[0.0f32; 4]; MAX_HOLES];
-    for (slot, h) in holes.iter_mut().zip(&scene.black_holes) {
-        let p = v3(DVec3::from(h.position));
+    for (slot, h) in holes.iter_mut().zip(spacetime.holes()) {
+        let p = v3(h.position);
         *slot = [p[0], p[1], p[2], h.rs as f32];
     }
     MetricParams {
         holes,
-        hole_count: scene.black_holes.len().min(MAX_HOLES) as u32,
-        gravity: flag(scene.physics.gravity),
+        hole_count: spacetime.holes().len().min(MAX_HOLES) as u32,
+        gravity: flag(spacetime.gpu_path() != GpuPath::Straight),
         _pad: [0.0; 2],
     }
 }

@@ -1,0 +1,225 @@
+//! The spacetime seam: what a scene's holes do to light, as one closed enum.
+//! Each variant gives, in f64, the light path from an origin along a
+//! direction ([`Spacetime::trace`]: closed form, integrated or straight),
+//! the observer's frame at any origin ([`Spacetime::observer`]), the
+//! redshift of a Keplerian emitter ([`Spacetime::emitter_g`]), the horizon,
+//! the photon orbit and the ISCO, and which path the GPU takes
+//! ([`Spacetime::gpu_path`]). The physics behind each lives in
+//! [`crate::physics`]; the GLSL twins are `shaders/include/metric/*.glsl`.
+//!
+//! The spinning (Kerr) hole joins as a variant here: `spacetime/kerr.rs`
+//! with its closed-form path (Mino time), tetrads and ISCO, each arm of the
+//! methods below, `shaders/include/metric/kerr.glsl` with the same function
+//! set as `schwarzschild.glsl` (a path from an origin and a direction, its
+//! disk-plane crossings, the escape direction, the emitter's g), and a
+//! [`GpuPath`] the ray march is specialised on.
+
+use glam::DVec3;
+
+use crate::physics::observer::{Observer, ObserverKind};
+use crate::physics::{Disk, Hole, Outcome, TraceOptions, closed_form, geodesic, redshift};
+use crate::scene::Scene;
+
+/// What the holes of a scene do to light.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Spacetime {
+    /// Gravity off: straight lines (the holes still absorb).
+    Flat(Vec<Hole>),
+    /// One non-rotating hole: exact light paths in closed form.
+    Schwarzschild(Hole),
+    /// Several holes: their pulls summed (an approximation, exact for one
+    /// hole only) and integrated step by step.
+    Summed(Vec<Hole>),
+}
+
+/// Which light path the ray march is specialised on (its `ONE_HOLE` and
+/// `STRAIGHT` constants; one file of `shaders/include/metric/` each).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GpuPath {
+    /// `metric/flat.glsl`, `trace_straight`.
+    Straight,
+    /// `metric/schwarzschild.glsl`, `trace_planar`.
+    ClosedForm,
+    /// `metric/summed.glsl`, `trace`.
+    Integrated,
+}
+
+impl Spacetime {
+    /// The scene's spacetime.
+    pub fn of(scene: &Scene) -> Self {
+        let holes = scene.physics_holes();
+        match holes.as_slice() {
+            _ if !scene.physics.gravity => Spacetime::Flat(holes),
+            [one] => Spacetime::Schwarzschild(*one),
+            _ => Spacetime::Summed(holes),
+        }
+    }
+
+    /// The holes.
+    pub fn holes(&self) -> &[Hole] {
+        match self {
+            Spacetime::Flat(h) | Spacetime::Summed(h) => h,
+            Spacetime::Schwarzschild(h) => std::slice::from_ref(h),
+        }
+    }
+
+    /// The hole whose frame an observer at `position` uses: the nearest.
+    pub fn reference_hole(&self, position: DVec3) -> Option<&Hole> {
+        crate::physics::observer::reference_hole(self.holes(), position)
+    }
+
+    /// The path the ray march takes.
+    pub fn gpu_path(&self) -> GpuPath {
+        match self {
+            Spacetime::Flat(_) => GpuPath::Straight,
+            Spacetime::Schwarzschild(_) => GpuPath::ClosedForm,
+            Spacetime::Summed(_) => GpuPath::Integrated,
+        }
+    }
+
+    /// Where a ray from `x0` along `v0` (a coordinate direction) ends: the
+    /// sky (with its final direction), a horizon, or the thin `disk`.
+    pub fn trace(&self, disk: Option<&Disk>, x0: DVec3, v0: DVec3, opt: &TraceOptions) -> Outcome {
+        match self {
+            Spacetime::Schwarzschild(hole) => closed_form::trace_closed(hole, disk, x0, v0),
+            Spacetime::Summed(holes) => geodesic::trace(holes, disk, x0, v0, opt).outcome,
+            Spacetime::Flat(holes) => trace_straight(holes, disk, x0, v0),
+        }
+    }
+
+    /// The observer of `kind` at `position` (any origin): the frame its
+    /// pixel directions are measured in. `disk_normal` sets an orbit's sense.
+    pub fn observer(&self, kind: ObserverKind, position: DVec3, disk_normal: DVec3) -> Observer {
+        let gravity = !matches!(self, Spacetime::Flat(_));
+        Observer::new(kind, position, self.holes(), disk_normal, gravity)
+    }
+
+    /// The redshift g = nu_obs / nu_emit, seen from far away, of light from
+    /// an emitter on a circular Keplerian orbit at `r` around the first hole,
+    /// for a photon of angular momentum `lambda` about the disk's axis (per
+    /// unit energy). With gravity off the emitter still turns: only the
+    /// Doppler part remains (the GPU's straight path uses the same formula).
+    pub fn emitter_g(&self, r: f64, lambda: f64) -> f64 {
+        let rs = self.holes().first().map_or(0.0, |h| h.rs);
+        redshift::disk_redshift(r, rs, lambda)
+    }
+
+    /// The horizon's radius around each hole (its `rs`).
+    pub fn horizon_radius(&self, hole: &Hole) -> f64 {
+        hole.rs
+    }
+
+    /// The photon orbit's radius around `hole`: 1.5 rs (none with gravity off).
+    pub fn photon_orbit(&self, hole: &Hole) -> Option<f64> {
+        (!matches!(self, Spacetime::Flat(_))).then_some(1.5 * hole.rs)
+    }
+
+    /// The innermost stable circular orbit around `hole`: 3 rs (none with
+    /// gravity off).
+    pub fn isco(&self, hole: &Hole) -> Option<f64> {
+        (!matches!(self, Spacetime::Flat(_))).then_some(3.0 * hole.rs)
+    }
+}
+
+/// A straight line from `x0` along `v0`: the first horizon it enters, the
+/// thin disk's annulus around the first hole, or the sky.
+fn trace_straight(holes: &[Hole], disk: Option<&Disk>, x0: DVec3, v0: DVec3) -> Outcome {
+    let d = v0.normalize();
+    // The first horizon along the line: (distance, hole).
+    let mut first: Option<(f64, usize)> = None;
+    for (i, h) in holes.iter().enumerate() {
+        let rel = x0 - h.position;
+        let b = rel.dot(d);
+        let c = rel.length_squared() - h.rs * h.rs;
+        if c < 0.0 {
+            return Outcome::Captured { hole: i };
+        }
+        let disc = b * b - c;
+        let t = -b - disc.max(0.0).sqrt();
+        if disc > 0.0 && t > 0.0 && first.is_none_or(|(best, _)| t < best) {
+            first = Some((t, i));
+        }
+    }
+    let t_h = first.map_or(f64::INFINITY, |(t, _)| t);
+    if let (Some(disk), Some(centre)) = (disk, holes.first()) {
+        let n = disk.normal.normalize();
+        let t = -(x0 - centre.position).dot(n) / d.dot(n);
+        let p = x0 + t * d;
+        let rho = (p - centre.position).length();
+        if t > 0.0 && t < t_h && (disk.inner..=disk.outer).contains(&rho) {
+            return Outcome::Disk {
+                position: p,
+                velocity: d,
+            };
+        }
+    }
+    match first {
+        Some((_, hole)) => Outcome::Captured { hole },
+        None => Outcome::Escaped { direction: d },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scene(toml: &str) -> Scene {
+        Scene::from_toml(toml, "t.toml").expect("scene")
+    }
+
+    #[test]
+    fn a_scene_picks_its_spacetime_and_gpu_path() {
+        let one = Spacetime::of(&scene(""));
+        assert!(matches!(one, Spacetime::Schwarzschild(_)));
+        assert_eq!(one.gpu_path(), GpuPath::ClosedForm);
+        let two = Spacetime::of(&Scene::load("binary").expect("preset"));
+        assert_eq!(two.gpu_path(), GpuPath::Integrated);
+        assert_eq!(two.holes().len(), 2);
+        let flat = Spacetime::of(&Scene::load("no-gravity").expect("preset"));
+        assert_eq!(flat.gpu_path(), GpuPath::Straight);
+        assert_eq!(flat.isco(&flat.holes()[0]), None);
+        assert_eq!(one.isco(&one.holes()[0]), Some(3.0));
+        assert_eq!(one.photon_orbit(&one.holes()[0]), Some(1.5));
+    }
+
+    #[test]
+    fn straight_rays_hit_what_line_geometry_says() {
+        let flat = Spacetime::of(&scene("[physics]\ngravity = false\n"));
+        let disk = Disk {
+            normal: DVec3::Y,
+            inner: 3.0,
+            outer: 12.0,
+        };
+        let opt = TraceOptions::default();
+        let x0 = DVec3::new(0.0, 0.0, -10.0);
+        // Straight at the hole: captured.
+        assert_eq!(
+            flat.trace(Some(&disk), x0, DVec3::Z, &opt),
+            Outcome::Captured { hole: 0 }
+        );
+        // Down onto the disk at 5 rs.
+        let p = DVec3::new(0.0, 0.0, -5.0);
+        match flat.trace(
+            Some(&disk),
+            DVec3::new(0.0, 2.0, -5.0),
+            p - DVec3::new(0.0, 2.0, -5.0),
+            &opt,
+        ) {
+            Outcome::Disk { position, .. } => assert!((position - p).length() < 1e-12),
+            o => panic!("{o:?}"),
+        }
+        // Away from everything: the sky, in its own direction.
+        match flat.trace(Some(&disk), x0, -DVec3::Z, &opt) {
+            Outcome::Escaped { direction } => assert!((direction + DVec3::Z).length() < 1e-12),
+            o => panic!("{o:?}"),
+        }
+    }
+
+    #[test]
+    fn the_emitter_redshift_is_the_kepler_formula() {
+        let s = Spacetime::of(&scene(""));
+        // A photon with no angular momentum about the axis: the transverse
+        // and gravitational shifts only, sqrt(1 - 1.5 rs / r).
+        assert!((s.emitter_g(6.0, 0.0) - 0.75f64.sqrt()).abs() < 1e-15);
+    }
+}
