@@ -129,24 +129,25 @@ impl SubState {
     }
 }
 
-/// The barrier one access needs on one subresource, given its state; updates
-/// the state. `None` when the access is already safe.
-///
-/// Returns (src_stage, src_access, dst_stage, dst_access, old, new).
-type Dep = (
-    vk::PipelineStageFlags2,
-    vk::AccessFlags2,
-    vk::PipelineStageFlags2,
-    vk::AccessFlags2,
-    vk::ImageLayout,
-    vk::ImageLayout,
-);
+/// What one access needs on one subresource before it (a barrier's two
+/// halves and the layouts), as [`transition`] derives it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Dep {
+    src_stage: vk::PipelineStageFlags2,
+    src_access: vk::AccessFlags2,
+    dst_stage: vk::PipelineStageFlags2,
+    dst_access: vk::AccessFlags2,
+    old_layout: vk::ImageLayout,
+    new_layout: vk::ImageLayout,
+}
 
 /// Whether the last write is already visible to this read's stage and access.
 fn already_visible(s: &SubState, i: crate::vk::AccessInfo) -> bool {
     s.visible_stage.contains(i.stage) && s.visible_access.contains(i.access)
 }
 
+/// The barrier one access needs on one subresource, given its state; updates
+/// the state. `None` when the access is already safe.
 fn transition(s: &mut SubState, access: Access, track_layout: bool) -> Option<Dep> {
     let i = access.info();
     let new_layout = if track_layout {
@@ -162,20 +163,25 @@ fn transition(s: &mut SubState, access: Access, track_layout: bool) -> Option<De
         // The visible stages chain through an earlier barrier to that write.
         let src_stage = s.sync_stage | s.read_stage | s.visible_stage;
         let needed = !src_stage.is_empty() || layout_change;
-        needed.then_some((
-            src_stage, s.pending, i.stage, i.access, s.layout, new_layout,
-        ))
+        needed.then_some(Dep {
+            src_stage,
+            src_access: s.pending,
+            dst_stage: i.stage,
+            dst_access: i.access,
+            old_layout: s.layout,
+            new_layout,
+        })
     } else if has_write && !already_visible(s, i) {
         // Read after a write not yet visible to this stage and access: chain
         // from the write (or the barrier that flushed it); flush it if needed.
-        Some((
-            s.sync_stage | s.visible_stage,
-            s.pending,
-            i.stage,
-            i.access,
-            s.layout,
-            s.layout,
-        ))
+        Some(Dep {
+            src_stage: s.sync_stage | s.visible_stage,
+            src_access: s.pending,
+            dst_stage: i.stage,
+            dst_access: i.access,
+            old_layout: s.layout,
+            new_layout: s.layout,
+        })
     } else {
         None
     };
@@ -212,10 +218,29 @@ fn transition(s: &mut SubState, access: Access, track_layout: bool) -> Option<De
 
 /// Compiles `graph`; see the module docs for the steps.
 pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
-    let n_images = graph.images.len();
-    let n_buffers = graph.buffers.len();
+    validate(graph)?;
+    let live = cull(graph);
+    let order: Vec<usize> = (0..graph.passes.len()).filter(|&p| live[p]).collect();
+    let culled: Vec<usize> = (0..graph.passes.len()).filter(|&p| !live[p]).collect();
+    let (image_usage, buffer_usage) = usage_flags(graph, &order);
+    let mut states = States::initial(graph);
+    let before = order
+        .iter()
+        .map(|&p| states.before_pass(graph, p))
+        .collect::<Result<Vec<_>>>()?;
+    let after = states.leave_imports(graph);
+    Ok(Compiled {
+        order,
+        culled,
+        before,
+        after,
+        image_usage,
+        buffer_usage,
+    })
+}
 
-    // 1. Validate the declarations.
+/// Step 1: every declared use is possible.
+fn validate(graph: &Graph<'_>) -> Result<()> {
     for pass in &graph.passes {
         let mut seen: Vec<(usize, u32)> = Vec::new();
         for u in &pass.images {
@@ -270,8 +295,16 @@ pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
             }
         }
     }
+    Ok(())
+}
 
-    // 2. Cull, per mip, backwards from what leaves the graph.
+/// Whether an access reads what is there (a read-write does too).
+fn reads(access: Access) -> bool {
+    !access.info().writes || access == Access::ComputeStorageReadWrite
+}
+
+/// Step 2: which passes live, per mip backwards from what leaves the graph.
+fn cull(graph: &Graph<'_>) -> Vec<bool> {
     let mut image_needed: Vec<Vec<bool>> = graph
         .images
         .iter()
@@ -306,28 +339,26 @@ pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
             continue;
         }
         live[p] = true;
-        for u in &pass.images {
-            if !u.access.info().writes || u.access == Access::ComputeStorageReadWrite {
-                for m in u.mips.levels(graph.images[u.image].desc.mip_levels) {
-                    image_needed[u.image][m as usize] = true;
-                }
+        for u in pass.images.iter().filter(|u| reads(u.access)) {
+            for m in u.mips.levels(graph.images[u.image].desc.mip_levels) {
+                image_needed[u.image][m as usize] = true;
             }
         }
-        for u in &pass.buffers {
-            if !u.access.info().writes || u.access == Access::ComputeStorageReadWrite {
-                buffer_needed[u.buffer] = true;
-            }
+        for u in pass.buffers.iter().filter(|u| reads(u.access)) {
+            buffer_needed[u.buffer] = true;
         }
     }
+    live
+}
 
-    // 3. Order: declaration order of the live passes.
-    let order: Vec<usize> = (0..graph.passes.len()).filter(|&p| live[p]).collect();
-    let culled: Vec<usize> = (0..graph.passes.len()).filter(|&p| !live[p]).collect();
-
-    // 4. Usage flags from live accesses (and the imports' own states).
-    let mut image_usage = vec![vk::ImageUsageFlags::empty(); n_images];
-    let mut buffer_usage = vec![vk::BufferUsageFlags::empty(); n_buffers];
-    for &p in &order {
+/// Step 4: usage flags from the live accesses.
+fn usage_flags(
+    graph: &Graph<'_>,
+    order: &[usize],
+) -> (Vec<vk::ImageUsageFlags>, Vec<vk::BufferUsageFlags>) {
+    let mut image_usage = vec![vk::ImageUsageFlags::empty(); graph.images.len()];
+    let mut buffer_usage = vec![vk::BufferUsageFlags::empty(); graph.buffers.len()];
+    for &p in order {
         for u in &graph.passes[p].images {
             image_usage[u.image] |= u.access.image_usage();
         }
@@ -335,51 +366,59 @@ pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
             buffer_usage[u.buffer] |= u.access.buffer_usage();
         }
     }
+    (image_usage, buffer_usage)
+}
 
-    // 5. Track state per subresource and emit barriers before each pass.
-    let mut image_state: Vec<Vec<SubState>> = graph
-        .images
-        .iter()
-        .map(|img| {
-            let initial = match &img.origin {
-                ImageOrigin::Transient => Access::Nothing,
-                ImageOrigin::Imported { initial, .. } => *initial,
-            };
-            vec![SubState::from_access(initial); img.desc.mip_levels as usize]
-        })
-        .collect();
-    let mut buffer_state: Vec<SubState> = graph
-        .buffers
-        .iter()
-        .map(|b| SubState::from_access(b.initial()))
-        .collect();
+/// The state of every subresource while steps 5 to 7 walk the live passes.
+struct States {
+    images: Vec<Vec<SubState>>,
+    buffers: Vec<SubState>,
+}
 
-    let mut before = Vec::with_capacity(order.len());
-    for &p in &order {
+impl States {
+    fn initial(graph: &Graph<'_>) -> Self {
+        States {
+            images: graph
+                .images
+                .iter()
+                .map(|img| {
+                    let initial = match &img.origin {
+                        ImageOrigin::Transient => Access::Nothing,
+                        ImageOrigin::Imported { initial, .. } => *initial,
+                    };
+                    vec![SubState::from_access(initial); img.desc.mip_levels as usize]
+                })
+                .collect(),
+            buffers: graph
+                .buffers
+                .iter()
+                .map(|b| SubState::from_access(b.initial()))
+                .collect(),
+        }
+    }
+
+    /// Steps 5 and 6: the barriers before pass `p`, adjacent mips merged.
+    fn before_pass(&mut self, graph: &Graph<'_>, p: usize) -> Result<PassBarriers> {
         let pass = &graph.passes[p];
         let mut barriers = PassBarriers::default();
         for u in &pass.images {
             let levels = u.mips.levels(graph.images[u.image].desc.mip_levels);
             let mut deps: Vec<(u32, Option<Dep>)> = Vec::with_capacity(levels.len());
             for m in levels {
-                let state = &mut image_state[u.image][m as usize];
-                let reads = !u.access.info().writes || u.access == Access::ComputeStorageReadWrite;
-                if reads && !state.written {
-                    let node = &graph.images[u.image];
+                let state = &mut self.images[u.image][m as usize];
+                if reads(u.access) && !state.written {
                     return Err(Error::Other(format!(
                         "pass `{}` reads mip {m} of `{}` before any pass wrote it",
-                        pass.name, node.name
+                        pass.name, graph.images[u.image].name
                     )));
                 }
                 deps.push((m, transition(state, u.access, true)));
             }
-            // 6. Merge adjacent levels with identical barriers.
             merge_levels(u.image, &deps, &mut barriers.images);
         }
         for u in &pass.buffers {
-            let state = &mut buffer_state[u.buffer];
-            let reads = !u.access.info().writes || u.access == Access::ComputeStorageReadWrite;
-            if reads && !state.written {
+            let state = &mut self.buffers[u.buffer];
+            if reads(u.access) && !state.written {
                 return Err(Error::Other(format!(
                     "pass `{}` reads buffer `{}` before any pass wrote it",
                     pass.name, graph.buffers[u.buffer].name
@@ -389,48 +428,42 @@ pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
                 barriers.buffers.push(buffer_barrier(u.buffer, d));
             }
         }
-        before.push(barriers);
+        Ok(barriers)
     }
 
-    // 7. Leave imports in their final state.
-    let mut after = PassBarriers::default();
-    for (id, img) in graph.images.iter().enumerate() {
-        if let ImageOrigin::Imported {
-            final_access: Some(fin),
-            ..
-        } = img.origin
-        {
-            let deps: Vec<(u32, Option<Dep>)> = (0..img.desc.mip_levels)
-                .map(|m| (m, transition(&mut image_state[id][m as usize], fin, true)))
-                .collect();
-            merge_levels(id, &deps, &mut after.images);
+    /// Step 7: the barriers that leave imports in their final state.
+    fn leave_imports(&mut self, graph: &Graph<'_>) -> PassBarriers {
+        let mut after = PassBarriers::default();
+        for (id, img) in graph.images.iter().enumerate() {
+            if let ImageOrigin::Imported {
+                final_access: Some(fin),
+                ..
+            } = img.origin
+            {
+                let deps: Vec<(u32, Option<Dep>)> = (0..img.desc.mip_levels)
+                    .map(|m| (m, transition(&mut self.images[id][m as usize], fin, true)))
+                    .collect();
+                merge_levels(id, &deps, &mut after.images);
+            }
         }
-    }
-    for (id, b) in graph.buffers.iter().enumerate() {
-        if let Some(fin) = b.final_access() {
-            if let Some(d) = transition(&mut buffer_state[id], fin, false) {
+        for (id, b) in graph.buffers.iter().enumerate() {
+            if let Some(fin) = b.final_access()
+                && let Some(d) = transition(&mut self.buffers[id], fin, false)
+            {
                 after.buffers.push(buffer_barrier(id, d));
             }
         }
+        after
     }
-
-    Ok(Compiled {
-        order,
-        culled,
-        before,
-        after,
-        image_usage,
-        buffer_usage,
-    })
 }
 
 fn buffer_barrier(buffer: usize, d: Dep) -> BufferBarrier {
     BufferBarrier {
         buffer,
-        src_stage: d.0,
-        src_access: d.1,
-        dst_stage: d.2,
-        dst_access: d.3,
+        src_stage: d.src_stage,
+        src_access: d.src_access,
+        dst_stage: d.dst_stage,
+        dst_access: d.dst_access,
     }
 }
 
@@ -445,12 +478,12 @@ fn merge_levels(image: usize, deps: &[(u32, Option<Dep>)], out: &mut Vec<ImageBa
             image,
             base_mip: m,
             mip_count: 1,
-            src_stage: d.0,
-            src_access: d.1,
-            dst_stage: d.2,
-            dst_access: d.3,
-            old_layout: d.4,
-            new_layout: d.5,
+            src_stage: d.src_stage,
+            src_access: d.src_access,
+            dst_stage: d.dst_stage,
+            dst_access: d.dst_access,
+            old_layout: d.old_layout,
+            new_layout: d.new_layout,
         };
         match current.as_mut() {
             Some(c)
