@@ -337,6 +337,14 @@ fn choice<T: PartialEq + Copy>(ui: &mut Ui, label: &str, v: &mut T, options: &[(
 
 /// Every scene key, grouped as in the TOML.
 fn scene_editor(ui: &mut Ui, s: &mut Scene) {
+    camera_and_holes(ui, s);
+    disk_and_physics(ui, s);
+    sky_and_plane(ui, s);
+    post_and_quality(ui, s);
+}
+
+/// `[camera]` and `[[black_hole]]`.
+fn camera_and_holes(ui: &mut Ui, s: &mut Scene) {
     egui::CollapsingHeader::new("camera")
         .default_open(true)
         .show(ui, |ui| {
@@ -382,6 +390,10 @@ fn scene_editor(ui: &mut Ui, s: &mut Scene) {
             });
         }
     });
+}
+
+/// `[disk]` and `[physics]`.
+fn disk_and_physics(ui: &mut Ui, s: &mut Scene) {
     egui::CollapsingHeader::new("disk").show(ui, |ui| {
         let d = &mut s.disk;
         choice(
@@ -429,6 +441,10 @@ fn scene_editor(ui: &mut Ui, s: &mut Scene) {
             "gravitational_redshift",
         );
     });
+}
+
+/// `[sky]` and `[grid_plane]`.
+fn sky_and_plane(ui: &mut Ui, s: &mut Scene) {
     egui::CollapsingHeader::new("sky").show(ui, |ui| {
         choice(
             ui,
@@ -473,6 +489,10 @@ fn scene_editor(ui: &mut Ui, s: &mut Scene) {
         num(ui, "spacing", &mut p.spacing, 0.05);
         num(ui, "size", &mut p.size, 0.5);
     });
+}
+
+/// `[bloom]`, `[post]` and `[quality]`.
+fn post_and_quality(ui: &mut Ui, s: &mut Scene) {
     egui::CollapsingHeader::new("bloom").show(ui, |ui| {
         let b = &mut s.bloom;
         num(ui, "strength", &mut b.strength, 0.01);

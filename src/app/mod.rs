@@ -5,6 +5,7 @@
 //! image through the graph (blit, then the GUI pass), present.
 
 pub mod camera;
+mod display;
 pub mod gui;
 
 use std::path::PathBuf;
@@ -47,41 +48,13 @@ pub struct WindowOptions {
     pub screenshot: Option<PathBuf>,
 }
 
-/// On Linux and the BSDs a window needs an X11 or Wayland display; say so
-/// plainly before winit fails with a message about its own source.
-fn check_display() -> Result<()> {
-    if cfg!(all(
-        unix,
-        not(target_os = "macos"),
-        not(target_os = "android")
-    )) {
-        let set = |v: &str| std::env::var_os(v).is_some_and(|s| !s.is_empty());
-        if !set("DISPLAY") && !set("WAYLAND_DISPLAY") {
-            return Err(Error::Usage(
-                "no display: set DISPLAY (X11) or WAYLAND_DISPLAY, or run under Xvfb \
-                 (`Xvfb :99 & DISPLAY=:99 blackhole window`)"
-                    .into(),
-            ));
-        }
-    }
-    Ok(())
-}
-
-/// winit's "os error at /path/to/winit/src/file.rs:12: why" as "why".
-fn without_source_location(msg: &str) -> &str {
-    match msg.find("os error at ") {
-        Some(at) => msg[at..].split_once(": ").map_or(msg, |(_, why)| why),
-        None => msg,
-    }
-}
-
 /// Opens the window and runs until it is closed (or `--frames` is reached).
 pub fn run(options: WindowOptions) -> Result<ExitCode> {
-    check_display()?;
+    display::check_display()?;
     let event_loop = EventLoop::new().map_err(|e| {
         Error::Usage(format!(
             "cannot open a window: {} (no display? set DISPLAY (X11) or WAYLAND_DISPLAY, or run under Xvfb)",
-            without_source_location(&e.to_string())
+            display::without_source_location(&e.to_string())
         ))
     })?;
     event_loop.set_control_flow(ControlFlow::Wait);
@@ -404,39 +377,11 @@ impl ApplicationHandler for App {
 impl Running {
     /// Draws and presents one frame.
     fn frame(&mut self, options: &WindowOptions) -> Result<()> {
+        self.tick();
         let renderer = self
             .renderer
             .as_mut()
             .ok_or_else(|| Error::Other("renderer already shut down".into()))?;
-        let now = Instant::now();
-        let dt = now
-            .duration_since(self.last_frame)
-            .min(Duration::from_millis(500));
-        self.last_frame = now;
-        let dt_s = dt.as_secs_f64();
-        // Average the frame time, not the rate: frames in flight make single
-        // intervals uneven.
-        if dt_s > 0.0 {
-            self.frame_s = if self.frame_s == 0.0 {
-                dt_s
-            } else {
-                0.9 * self.frame_s + 0.1 * dt_s
-            };
-            self.fps = 1.0 / self.frame_s;
-        }
-        if !self.paused {
-            self.time += dt_s;
-        }
-        // Automatic render scale: cost goes with the pixel count, so the
-        // scale moves by sqrt(target / measured), in 5% steps and only when
-        // off by more than 20%, so a still view keeps one size and refines.
-        if self.auto_scale && dt_s > 0.0 && self.samples == 0 {
-            let ideal = (self.scale * (AUTO_TARGET_MS / (dt_s * 1e3)).sqrt()).clamp(0.1, 1.0);
-            if (ideal / self.scale - 1.0).abs() > 0.2 {
-                self.scale = (ideal * 20.0).round() / 20.0;
-            }
-        }
-
         if let Some(t) = renderer.begin_window_frame()? {
             self.timings = t;
         }
@@ -510,26 +455,14 @@ impl Running {
         let mut drawn = self.scene.clone();
         drawn.time = self.time;
 
-        // Progressive refinement while nothing changes.
-        let mut key = drawn.clone();
-        if drawn.disk.kind != crate::scene::DiskKind::Volumetric {
-            key.time = 0.0;
-        }
-        let still = Some((key, render_size));
-        if still == self.still {
-            self.samples = (self.samples + 1).min(MAX_SAMPLES);
-        } else {
-            self.samples = 0;
-            self.still = still;
-        }
-        let jitter = if self.samples == 0 {
-            (0.0, 0.0)
-        } else {
-            (halton(self.samples, 2) - 0.5, halton(self.samples, 3) - 0.5)
-        };
+        let jitter = self.next_sample(&drawn, render_size);
         // With --screenshot every frame is copied out, so whichever frame
         // turns out to be the last (--frames, Esc, closing) can be written.
         let capture = options.screenshot.is_some();
+        let renderer = self
+            .renderer
+            .as_mut()
+            .ok_or_else(|| Error::Other("renderer already shut down".into()))?;
         renderer.draw_to_swapchain(
             &drawn,
             ViewOptions {
@@ -555,6 +488,61 @@ impl Running {
             self.save_view()?;
         }
         Ok(())
+    }
+
+    /// The clock: the frame time's running mean, the scene's time (unless
+    /// paused) and the automatic render scale.
+    fn tick(&mut self) {
+        let now = Instant::now();
+        let dt = now
+            .duration_since(self.last_frame)
+            .min(Duration::from_millis(500));
+        self.last_frame = now;
+        let dt_s = dt.as_secs_f64();
+        // Average the frame time, not the rate: frames in flight make single
+        // intervals uneven.
+        if dt_s > 0.0 {
+            self.frame_s = if self.frame_s == 0.0 {
+                dt_s
+            } else {
+                0.9 * self.frame_s + 0.1 * dt_s
+            };
+            self.fps = 1.0 / self.frame_s;
+        }
+        if !self.paused {
+            self.time += dt_s;
+        }
+        // Automatic render scale: cost goes with the pixel count, so the
+        // scale moves by sqrt(target / measured), in 5% steps and only when
+        // off by more than 20%, so a still view keeps one size and refines.
+        if self.auto_scale && dt_s > 0.0 && self.samples == 0 {
+            let ideal = (self.scale * (AUTO_TARGET_MS / (dt_s * 1e3)).sqrt()).clamp(0.1, 1.0);
+            if (ideal / self.scale - 1.0).abs() > 0.2 {
+                self.scale = (ideal * 20.0).round() / 20.0;
+            }
+        }
+    }
+
+    /// Progressive refinement while nothing changes: the sample count of
+    /// the unchanged view and this frame's sub-pixel jitter (none for the
+    /// first sample).
+    fn next_sample(&mut self, drawn: &Scene, render_size: (u32, u32)) -> (f64, f64) {
+        let mut key = drawn.clone();
+        if drawn.disk.kind != crate::scene::DiskKind::Volumetric {
+            key.time = 0.0;
+        }
+        let still = Some((key, render_size));
+        if still == self.still {
+            self.samples = (self.samples + 1).min(MAX_SAMPLES);
+        } else {
+            self.samples = 0;
+            self.still = still;
+        }
+        if self.samples == 0 {
+            (0.0, 0.0)
+        } else {
+            (halton(self.samples, 2) - 0.5, halton(self.samples, 3) - 0.5)
+        }
     }
 
     /// F12: the view at full quality (full resolution, no panel) as PNG.

@@ -93,7 +93,10 @@ impl Gpu {
     /// Picks a device on `instance`. With `present`, the queue must also do
     /// graphics (blits, the GUI) and present to the surface `present` asks
     /// about, and the swapchain and dynamic rendering are enabled.
-    pub fn open(instance: Instance, present: Option<PresentCheck<'_>>) -> Result<Arc<Self>> {
+    /// The device to use: the first of the usable devices (the one
+    /// `BLACKHOLE_DEVICE` names, if set) by kind, discrete first; why none
+    /// is, if none is.
+    fn choose(instance: &Instance, present: Option<PresentCheck<'_>>) -> Result<Candidate> {
         let inst = &instance.instance;
 
         // SAFETY: valid instance.
@@ -109,7 +112,7 @@ impl Gpu {
         }
         let mut candidates: Vec<Candidate> = physicals
             .iter()
-            .map(|&pd| Self::describe(&instance, pd, present))
+            .map(|&pd| Self::describe(instance, pd, present))
             .collect::<Result<_>>()?;
 
         let wanted = crate::settings::get().device.clone();
@@ -145,6 +148,12 @@ impl Gpu {
             vk::api_version_patch(chosen.api_version)
         );
 
+        Ok(chosen)
+    }
+
+    pub fn open(instance: Instance, present: Option<PresentCheck<'_>>) -> Result<Arc<Self>> {
+        let chosen = Self::choose(&instance, present)?;
+        let inst = &instance.instance;
         let is_13 = chosen.api_version >= vk::API_VERSION_1_3;
         let mut ext_names = vec![khr::push_descriptor::NAME.as_ptr()];
         if present.is_some() {

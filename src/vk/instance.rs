@@ -39,6 +39,45 @@ impl Validation {
     }
 }
 
+/// Errors and warnings of every kind go to `debug_callback`, which counts
+/// them in `counts` (boxed by the caller so its address outlives the
+/// instance).
+fn messenger_info(counts: &ValidationCounts) -> vk::DebugUtilsMessengerCreateInfoEXT<'static> {
+    vk::DebugUtilsMessengerCreateInfoEXT::default()
+        .message_severity(
+            vk::DebugUtilsMessageSeverityFlagsEXT::ERROR
+                | vk::DebugUtilsMessageSeverityFlagsEXT::WARNING,
+        )
+        .message_type(
+            vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
+                | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
+                | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE,
+        )
+        .pfn_user_callback(Some(debug_callback))
+        .user_data(counts as *const ValidationCounts as *mut c_void)
+}
+
+/// A failed vkCreateInstance in words: no driver, a missing layer or
+/// extension, or a driver the loader could not load.
+fn instance_error(result: vk::Result) -> Error {
+    match result {
+        // The loader says this when it finds no driver at all.
+        vk::Result::ERROR_INCOMPATIBLE_DRIVER => Error::NoDevice(format!(
+            " (the Vulkan loader found no driver it could load{})",
+            manifests_named()
+                .map(|m| format!("; {m} names the manifests"))
+                .unwrap_or_default()
+        )),
+        vk::Result::ERROR_LAYER_NOT_PRESENT | vk::Result::ERROR_EXTENSION_NOT_PRESENT => {
+            Error::Vulkan {
+                what: "creating the Vulkan instance".into(),
+                result,
+            }
+        }
+        result => loader_failure("creating the instance", result),
+    }
+}
+
 /// The loader's variables that name driver manifests, as set (`VAR=value`).
 fn manifests_named() -> Option<String> {
     let named: Vec<String> = ["VK_DRIVER_FILES", "VK_ICD_FILENAMES", "VK_ADD_DRIVER_FILES"]
@@ -183,18 +222,7 @@ impl Instance {
         };
 
         let counts = Box::new(ValidationCounts::default());
-        let mut messenger_info = vk::DebugUtilsMessengerCreateInfoEXT::default()
-            .message_severity(
-                vk::DebugUtilsMessageSeverityFlagsEXT::ERROR
-                    | vk::DebugUtilsMessageSeverityFlagsEXT::WARNING,
-            )
-            .message_type(
-                vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
-                    | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
-                    | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE,
-            )
-            .pfn_user_callback(Some(debug_callback))
-            .user_data(&*counts as *const ValidationCounts as *mut c_void);
+        let mut messenger_info = messenger_info(&counts);
         // Synchronization validation checks the graph's barriers on every run.
         let enabled_features = [vk::ValidationFeatureEnableEXT::SYNCHRONIZATION_VALIDATION];
         let mut validation_features =
@@ -213,28 +241,8 @@ impl Instance {
                 .push_next(&mut validation_features);
         }
         // SAFETY: every pointer in create_info outlives the call.
-        let instance = match unsafe { entry.create_instance(&create_info, None) } {
-            Ok(i) => i,
-            // The loader says this when it finds no driver at all.
-            Err(vk::Result::ERROR_INCOMPATIBLE_DRIVER) => {
-                return Err(Error::NoDevice(format!(
-                    " (the Vulkan loader found no driver it could load{})",
-                    manifests_named()
-                        .map(|m| format!("; {m} names the manifests"))
-                        .unwrap_or_default()
-                )));
-            }
-            Err(
-                result @ (vk::Result::ERROR_LAYER_NOT_PRESENT
-                | vk::Result::ERROR_EXTENSION_NOT_PRESENT),
-            ) => {
-                return Err(Error::Vulkan {
-                    what: "creating the Vulkan instance".into(),
-                    result,
-                });
-            }
-            Err(result) => return Err(loader_failure("creating the instance", result)),
-        };
+        let instance =
+            unsafe { entry.create_instance(&create_info, None) }.map_err(instance_error)?;
 
         let (debug_utils, messenger) = if have_debug_utils {
             let du = ext::debug_utils::Instance::new(&entry, &instance);

@@ -133,17 +133,7 @@ impl Swapchain {
                 .get_physical_device_surface_present_modes(pd, self.surface)
         }
         .ctx(|| "listing the surface's present modes".into())?;
-        // The composite writes sRGB-encoded values: a UNORM swapchain shows
-        // them as they are.
-        let format = [vk::Format::B8G8R8A8_UNORM, vk::Format::R8G8B8A8_UNORM]
-            .into_iter()
-            .find_map(|f| formats.iter().find(|s| s.format == f).copied())
-            .ok_or_else(|| {
-                Error::Other(format!(
-                    "the window's surface offers no 8-bit UNORM format (it offers {:?})",
-                    formats.iter().map(|f| f.format).collect::<Vec<_>>()
-                ))
-            })?;
+        let format = unorm_format(&formats)?;
         let mode = if modes.contains(&self.wanted.vk()) {
             self.wanted.vk()
         } else {
@@ -153,20 +143,7 @@ impl Swapchain {
             );
             vk::PresentModeKHR::FIFO
         };
-        let extent = if caps.current_extent.width != u32::MAX {
-            caps.current_extent
-        } else {
-            vk::Extent2D {
-                width: size.0.clamp(
-                    caps.min_image_extent.width,
-                    caps.max_image_extent.width.max(1),
-                ),
-                height: size.1.clamp(
-                    caps.min_image_extent.height,
-                    caps.max_image_extent.height.max(1),
-                ),
-            }
-        };
+        let extent = extent_for(&caps, size);
         let mut count = caps.min_image_count + 1;
         if caps.max_image_count > 0 {
             count = count.min(caps.max_image_count);
@@ -320,5 +297,36 @@ impl Drop for Swapchain {
             }
             self.surface_fn.destroy_surface(self.surface, None);
         }
+    }
+}
+
+/// The composite writes sRGB-encoded values: a UNORM swapchain shows them as
+/// they are.
+fn unorm_format(formats: &[vk::SurfaceFormatKHR]) -> Result<vk::SurfaceFormatKHR> {
+    [vk::Format::B8G8R8A8_UNORM, vk::Format::R8G8B8A8_UNORM]
+        .into_iter()
+        .find_map(|f| formats.iter().find(|s| s.format == f).copied())
+        .ok_or_else(|| {
+            Error::Other(format!(
+                "the window's surface offers no 8-bit UNORM format (it offers {:?})",
+                formats.iter().map(|f| f.format).collect::<Vec<_>>()
+            ))
+        })
+}
+
+/// The surface's own size, or the window's clamped to what it allows.
+fn extent_for(caps: &vk::SurfaceCapabilitiesKHR, size: (u32, u32)) -> vk::Extent2D {
+    if caps.current_extent.width != u32::MAX {
+        return caps.current_extent;
+    }
+    vk::Extent2D {
+        width: size.0.clamp(
+            caps.min_image_extent.width,
+            caps.max_image_extent.width.max(1),
+        ),
+        height: size.1.clamp(
+            caps.min_image_extent.height,
+            caps.max_image_extent.height.max(1),
+        ),
     }
 }
