@@ -57,7 +57,12 @@ fn catch_signals(out: &Path) {
                 "{} (stopped at once by a second signal)",
                 interrupted_summary(&out)
             );
-            std::process::exit(i32::from(INTERRUPTED));
+            // Not exit(): its atexit handlers would tear the driver down
+            // under the main thread's frame in flight (seen as a crash
+            // instead of status 130). The file being written is gone, and
+            // nothing else is half-done on disk.
+            // SAFETY: _exit ends the process at once; no Rust state is used after.
+            unsafe { libc::_exit(i32::from(INTERRUPTED)) }
         }
     });
     if let Err(e) = installed {

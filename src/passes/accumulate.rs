@@ -6,9 +6,12 @@
 
 use bytemuck::{Pod, Zeroable};
 
-use super::{Pipelines, dispatch_2d};
+use std::sync::Arc;
+
+use super::dispatch_2d;
+use crate::Result;
 use crate::graph::{Graph, ImageHandle, Mips};
-use crate::vk::{Access, Descriptor};
+use crate::vk::{Access, BindingKind, ComputePipeline, Descriptor, Gpu};
 
 /// Format of the running mean (f32: thousands of samples without drift).
 pub const MEAN_FORMAT: ash::vk::Format = ash::vk::Format::R32G32B32A32_SFLOAT;
@@ -22,12 +25,27 @@ pub struct AccumulatePush {
     pub weight: f32,
 }
 
+/// The accumulation's pipeline, owned by this pass.
+pub struct AccumulatePipeline(ComputePipeline);
+
+impl AccumulatePipeline {
+    pub fn new(gpu: &Arc<Gpu>) -> Result<Self> {
+        Ok(AccumulatePipeline(ComputePipeline::new(
+            gpu,
+            "accumulate",
+            crate::shaders::ACCUMULATE,
+            &[BindingKind::StorageImage, BindingKind::StorageImage],
+            std::mem::size_of::<AccumulatePush>() as u32,
+        )?))
+    }
+}
+
 /// Folds `sample` (the `index`-th sample of this view, 0-based) into `mean`,
 /// an image kept across frames. Sample 0 overwrites the mean, so the mean is
 /// only read (and must hold earlier samples) when `index > 0`.
 pub fn add_accumulate<'a>(
     graph: &mut Graph<'a>,
-    pipelines: &'a Pipelines,
+    pipeline: &'a AccumulatePipeline,
     sample: &ImageHandle,
     mean: &mut ImageHandle,
     index: u32,
@@ -51,7 +69,7 @@ pub fn add_accumulate<'a>(
         .record(move |ctx| {
             dispatch_2d(
                 ctx,
-                &pipelines.accumulate,
+                &pipeline.0,
                 &[
                     Descriptor::StorageImage(ctx.view(&src, 0)),
                     Descriptor::StorageImage(ctx.view(&dst, 0)),

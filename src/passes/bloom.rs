@@ -17,10 +17,13 @@
 use ash::vk;
 use bytemuck::{Pod, Zeroable};
 
-use super::{Pipelines, dispatch_2d};
+use std::sync::Arc;
+
+use super::dispatch_2d;
+use crate::Result;
 use crate::graph::{Graph, ImageHandle, Mips};
 use crate::scene::Bloom;
-use crate::vk::{Access, Descriptor};
+use crate::vk::{Access, BindingKind, ComputePipeline, Descriptor, Gpu, Sampler};
 
 /// Format of the bloom chain.
 pub const BLOOM_FORMAT: vk::Format = vk::Format::R16G16B16A16_SFLOAT;
@@ -52,11 +55,51 @@ pub struct BloomUpPush {
     pub radius: f32,
 }
 
+/// The chain's three pipelines and its sampler, owned by this pass.
+pub struct BloomPipelines {
+    prefilter: ComputePipeline,
+    down: ComputePipeline,
+    up: ComputePipeline,
+    sampler: Sampler,
+}
+
+impl BloomPipelines {
+    pub fn new(gpu: &Arc<Gpu>) -> Result<Self> {
+        let stage = |name, spirv, push: usize| {
+            ComputePipeline::new(
+                gpu,
+                name,
+                spirv,
+                &[BindingKind::SampledImage, BindingKind::StorageImage],
+                push as u32,
+            )
+        };
+        Ok(BloomPipelines {
+            prefilter: stage(
+                "bloom prefilter",
+                crate::shaders::BLOOM_PREFILTER,
+                std::mem::size_of::<BloomPrefilterPush>(),
+            )?,
+            down: stage(
+                "bloom down",
+                crate::shaders::BLOOM_DOWN,
+                std::mem::size_of::<BloomDownPush>(),
+            )?,
+            up: stage(
+                "bloom up",
+                crate::shaders::BLOOM_UP,
+                std::mem::size_of::<BloomUpPush>(),
+            )?,
+            sampler: Sampler::linear_clamp(gpu)?,
+        })
+    }
+}
+
 /// Adds the chain reading `hdr`; returns the bloom image, whose level 0 holds
 /// the sum of all levels. `None` when the strength is 0 (nothing to add).
 pub fn add_bloom<'a>(
     graph: &mut Graph<'a>,
-    pipelines: &'a Pipelines,
+    pipelines: &'a BloomPipelines,
     hdr: &ImageHandle,
     settings: &Bloom,
 ) -> Option<ImageHandle> {
@@ -73,7 +116,7 @@ pub fn add_bloom<'a>(
     .with_mips(settings.levels);
     let mut chain = graph.create_image("bloom", desc);
     let levels = chain.desc.mip_levels;
-    let sampler = pipelines.linear_clamp.sampler;
+    let sampler = pipelines.sampler.sampler;
     let (threshold, knee, radius) = (
         settings.threshold as f32,
         settings.knee as f32,
@@ -98,7 +141,7 @@ pub fn add_bloom<'a>(
                 };
                 dispatch_2d(
                     ctx,
-                    &pipelines.bloom_prefilter,
+                    &pipelines.prefilter,
                     &[
                         Descriptor::SampledImage(ctx.full_view(&src), sampler),
                         Descriptor::StorageImage(ctx.view(&dst, 0)),
@@ -127,7 +170,7 @@ pub fn add_bloom<'a>(
                 };
                 dispatch_2d(
                     ctx,
-                    &pipelines.bloom_down,
+                    &pipelines.down,
                     &[
                         Descriptor::SampledImage(ctx.view(&src, n), sampler),
                         Descriptor::StorageImage(ctx.view(&dst, n + 1)),
@@ -157,7 +200,7 @@ pub fn add_bloom<'a>(
                 };
                 dispatch_2d(
                     ctx,
-                    &pipelines.bloom_up,
+                    &pipelines.up,
                     &[
                         Descriptor::SampledImage(ctx.view(&src, n + 1), sampler),
                         Descriptor::StorageImage(ctx.view(&dst, n)),

@@ -6,10 +6,13 @@
 use ash::vk;
 use bytemuck::{Pod, Zeroable};
 
-use super::{Pipelines, dispatch_2d};
+use std::sync::Arc;
+
+use super::{VariantCache, dispatch_2d};
+use crate::Result;
 use crate::graph::{BufferHandle, Graph, ImageDesc, ImageHandle, Mips};
 use crate::scene::{Bloom, Post, Tonemap};
-use crate::vk::{Access, Descriptor};
+use crate::vk::{Access, BindingKind, Buffer, ComputePipeline, Descriptor, Gpu, Sampler};
 
 /// 8-bit output format (sRGB-encoded values in a UNORM image: storage images
 /// cannot be SRGB).
@@ -92,13 +95,60 @@ pub struct CompositeInputs<'h> {
     pub exposure: Option<&'h BufferHandle>,
 }
 
+/// The composite's pipelines by variant (built on first use), its sampler
+/// and the buffer bound where there is no metered exposure, owned by this
+/// pass.
+pub struct CompositePipelines {
+    cache: VariantCache<Variant>,
+    gpu: Arc<Gpu>,
+    sampler: Sampler,
+    placeholder: Buffer,
+}
+
+impl CompositePipelines {
+    pub fn new(gpu: &Arc<Gpu>) -> Result<Self> {
+        Ok(CompositePipelines {
+            cache: VariantCache::new(),
+            gpu: gpu.clone(),
+            sampler: Sampler::linear_clamp(gpu)?,
+            placeholder: super::placeholder_buffer(gpu)?,
+        })
+    }
+
+    /// The composite specialised for its output, tone map, bloom and
+    /// upscaling (composite.comp's constants), built on first use and kept.
+    pub fn pipeline(&self, variant: Variant) -> Result<Arc<ComputePipeline>> {
+        self.cache.get(variant, || {
+            let spirv = if variant.linear {
+                crate::shaders::COMPOSITE_HDR
+            } else {
+                crate::shaders::COMPOSITE
+            };
+            let bindings = [
+                BindingKind::SampledImage,
+                BindingKind::StorageImage,
+                BindingKind::SampledImage,
+                BindingKind::StorageBuffer,
+            ];
+            ComputePipeline::with_constants(
+                &self.gpu,
+                &format!("{variant:?}"),
+                spirv,
+                &bindings,
+                std::mem::size_of::<CompositePush>() as u32,
+                &variant.constants(),
+            )
+        })
+    }
+}
+
 /// Adds the composite of `hdr` (plus `bloom`, level 0, if given) at the
 /// graph's output size (upscaling `hdr` bilinearly if it is smaller); returns
 /// the 8-bit image, or with `linear` the bloomed, exposed linear HDR image (no
 /// tone map, no dither).
 pub fn add_composite<'a>(
     graph: &mut Graph<'a>,
-    pipelines: &'a Pipelines,
+    pipelines: &'a CompositePipelines,
     hdr: &ImageHandle,
     inputs: CompositeInputs<'_>,
     bloom_settings: &Bloom,
@@ -164,7 +214,7 @@ pub fn add_composite<'a>(
     }
     pass.write(&mut ldr, Access::ComputeStorageWrite, Mips::ALL)
         .record(move |ctx| {
-            let sampler = pipelines.linear_clamp.sampler;
+            let sampler = pipelines.sampler.sampler;
             // Without bloom the binding still needs an image; the shader skips it.
             let bloom_view = match &blur {
                 Some(b) => ctx.view(b, 0),
@@ -173,9 +223,9 @@ pub fn add_composite<'a>(
             // Without automatic exposure the shader never reads it.
             let metered_buffer = match &metered {
                 Some(e) => ctx.buffer(e),
-                None => pipelines.placeholder_buffer.buffer,
+                None => pipelines.placeholder.buffer,
             };
-            let pipeline = pipelines.composite(variant)?;
+            let pipeline = pipelines.pipeline(variant)?;
             dispatch_2d(
                 ctx,
                 &pipeline,

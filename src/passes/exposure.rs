@@ -7,10 +7,13 @@
 
 use bytemuck::{Pod, Zeroable};
 
-use super::{Pipelines, dispatch_2d};
+use std::sync::Arc;
+
+use super::dispatch_2d;
+use crate::Result;
 use crate::graph::{BufferHandle, Graph, ImageHandle, Mips};
 use crate::scene::Post;
-use crate::vk::{Access, Descriptor};
+use crate::vk::{Access, BindingKind, ComputePipeline, Descriptor, Gpu, Sampler};
 
 /// The luminance the metered band's mean is brought to: the band is
 /// weighted toward the bright pixels, so this sits above mid grey (0.18).
@@ -26,11 +29,32 @@ pub struct ExposurePush {
     pub key: f32,
 }
 
+/// The metering's pipeline and sampler, owned by this pass.
+pub struct ExposurePipeline {
+    pipeline: ComputePipeline,
+    sampler: Sampler,
+}
+
+impl ExposurePipeline {
+    pub fn new(gpu: &Arc<Gpu>) -> Result<Self> {
+        Ok(ExposurePipeline {
+            pipeline: ComputePipeline::new(
+                gpu,
+                "exposure",
+                crate::shaders::EXPOSURE,
+                &[BindingKind::SampledImage, BindingKind::StorageBuffer],
+                std::mem::size_of::<ExposurePush>() as u32,
+            )?,
+            sampler: Sampler::linear_clamp(gpu)?,
+        })
+    }
+}
+
 /// Adds the metering of `hdr` when `post` asks for automatic exposure;
 /// returns the buffer holding the exposure (one f32).
 pub fn add_exposure<'a>(
     graph: &mut Graph<'a>,
-    pipelines: &'a Pipelines,
+    pipeline: &'a ExposurePipeline,
     hdr: &ImageHandle,
     post: &Post,
 ) -> Option<BufferHandle> {
@@ -53,9 +77,9 @@ pub fn add_exposure<'a>(
             // One workgroup (256 invocations) meters the whole image.
             dispatch_2d(
                 ctx,
-                &pipelines.exposure,
+                &pipeline.pipeline,
                 &[
-                    Descriptor::SampledImage(ctx.full_view(&input), pipelines.linear_clamp.sampler),
+                    Descriptor::SampledImage(ctx.full_view(&input), pipeline.sampler.sampler),
                     Descriptor::StorageBuffer(ctx.buffer(&output)),
                 ],
                 bytemuck::bytes_of(&push),

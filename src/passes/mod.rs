@@ -1,5 +1,8 @@
-//! Effects, one per file. Each is a function that adds passes to a graph and
-//! returns the images it produced; none writes a barrier.
+//! Effects, one per file. Each owns its pipelines (built from the embedded
+//! SPIR-V, with its own samplers) and has a function that adds its passes to
+//! a graph and returns the images it produced; none writes a barrier. This
+//! module holds only what they share: the dispatch helpers and the cache of
+//! specialised pipelines.
 
 pub mod accumulate;
 pub mod bloom;
@@ -12,115 +15,19 @@ pub mod raymarch;
 use std::sync::Arc;
 
 use crate::Result;
-use crate::shaders::{RAYMARCH, RAYMARCH_AOV, RAYMARCH_NO_QUAD, RAYMARCH_SPLIT};
-use crate::vk::{BindingKind, ComputePipeline, Gpu, Sampler};
-
-/// The parameter block is a read-only storage buffer, not a uniform buffer:
-/// on Mesa's lavapipe (22.3) every dispatch that read a uniform buffer
-/// leaked about 0.55 MB inside the driver until the device was destroyed
-/// (1,000 frames at 160x90 took 640 MB; the same with a storage buffer, 120
-/// MB) and cost twice the time. Found by skipping one pass's dispatch at a
-/// time; the layout is the same (every member a vec4). Bindings 6 and 7 are
-/// the split thin-disk ray march's work list and indirect dispatch.
-const RAYMARCH_BINDINGS: [BindingKind; 8] = [
-    BindingKind::StorageImage,
-    BindingKind::StorageBuffer,
-    BindingKind::SampledImage,
-    BindingKind::SampledImage,
-    BindingKind::SampledImage,
-    BindingKind::SampledImage,
-    BindingKind::StorageBuffer,
-    BindingKind::StorageBuffer,
-];
-
-/// Pipelines and samplers the passes use, created once per renderer.
-pub struct Pipelines {
-    /// Ray-march pipelines by variant, built the first time a scene needs one.
-    raymarch: VariantCache<raymarch::Variant>,
-    gpu: Arc<Gpu>,
-    /// What the renderer does on this device.
-    features: crate::render::Features,
-    /// Composite pipelines by variant, built on first use.
-    composite: VariantCache<composite::Variant>,
-    pub bloom_prefilter: ComputePipeline,
-    pub bloom_down: ComputePipeline,
-    pub bloom_up: ComputePipeline,
-    pub accumulate: ComputePipeline,
-    pub exposure: ComputePipeline,
-    pub linear_clamp: Sampler,
-    /// Bound where a pass's optional buffer is absent (a shader's
-    /// specialisation then never reads it).
-    pub placeholder_buffer: crate::vk::Buffer,
-    pub sky_sampler: Sampler,
-    pub repeat_sampler: Sampler,
-}
-
-impl Pipelines {
-    /// Builds every pipeline from the embedded SPIR-V.
-    pub fn new(gpu: &Arc<Gpu>, features: crate::render::Features) -> Result<Self> {
-        Ok(Pipelines {
-            raymarch: VariantCache::new(),
-            gpu: gpu.clone(),
-            features,
-            composite: VariantCache::new(),
-            bloom_prefilter: ComputePipeline::new(
-                gpu,
-                "bloom prefilter",
-                crate::shaders::BLOOM_PREFILTER,
-                &[BindingKind::SampledImage, BindingKind::StorageImage],
-                std::mem::size_of::<bloom::BloomPrefilterPush>() as u32,
-            )?,
-            bloom_down: ComputePipeline::new(
-                gpu,
-                "bloom down",
-                crate::shaders::BLOOM_DOWN,
-                &[BindingKind::SampledImage, BindingKind::StorageImage],
-                std::mem::size_of::<bloom::BloomDownPush>() as u32,
-            )?,
-            bloom_up: ComputePipeline::new(
-                gpu,
-                "bloom up",
-                crate::shaders::BLOOM_UP,
-                &[BindingKind::SampledImage, BindingKind::StorageImage],
-                std::mem::size_of::<bloom::BloomUpPush>() as u32,
-            )?,
-            accumulate: ComputePipeline::new(
-                gpu,
-                "accumulate",
-                crate::shaders::ACCUMULATE,
-                &[BindingKind::StorageImage, BindingKind::StorageImage],
-                std::mem::size_of::<accumulate::AccumulatePush>() as u32,
-            )?,
-            exposure: ComputePipeline::new(
-                gpu,
-                "exposure",
-                crate::shaders::EXPOSURE,
-                &[BindingKind::SampledImage, BindingKind::StorageBuffer],
-                std::mem::size_of::<exposure::ExposurePush>() as u32,
-            )?,
-            linear_clamp: Sampler::linear_clamp(gpu)?,
-            placeholder_buffer: crate::vk::Buffer::new(
-                gpu,
-                "placeholder",
-                16,
-                ash::vk::BufferUsageFlags::STORAGE_BUFFER,
-                gpu_allocator::MemoryLocation::GpuOnly,
-            )?,
-            sky_sampler: Sampler::linear_repeat_u(gpu)?,
-            repeat_sampler: Sampler::linear_repeat(gpu)?,
-        })
-    }
-}
+use crate::vk::{ComputePipeline, Gpu};
 
 /// Pipelines of one shader by specialisation, built on first use and kept.
-struct VariantCache<K>(std::sync::Mutex<std::collections::HashMap<K, Arc<ComputePipeline>>>);
+pub(crate) struct VariantCache<K>(
+    std::sync::Mutex<std::collections::HashMap<K, Arc<ComputePipeline>>>,
+);
 
 impl<K: std::hash::Hash + Eq + Copy> VariantCache<K> {
-    fn new() -> Self {
+    pub(crate) fn new() -> Self {
         VariantCache(std::sync::Mutex::new(std::collections::HashMap::new()))
     }
 
-    fn get(
+    pub(crate) fn get(
         &self,
         key: K,
         build: impl FnOnce() -> Result<ComputePipeline>,
@@ -138,74 +45,16 @@ impl<K: std::hash::Hash + Eq + Copy> VariantCache<K> {
     }
 }
 
-impl Pipelines {
-    /// The ray march specialised for a scene's variant (the specialization
-    /// constants of raymarch.comp), built on first use and kept. Code a scene
-    /// does not use is compiled out, not just skipped: on a CPU driver such as
-    /// lavapipe every branch runs under a mask for every pixel, so a branch
-    /// not taken costs as much as one taken.
-    pub fn raymarch(&self, variant: raymarch::Variant) -> Result<Arc<ComputePipeline>> {
-        self.raymarch.get(variant, || {
-            let spirv = if variant.aov {
-                RAYMARCH_AOV
-            } else if variant.disk_stage != raymarch::glsl::DISK_STAGE_ALL {
-                RAYMARCH_SPLIT
-            } else if self.features.ray_differentials {
-                RAYMARCH
-            } else {
-                RAYMARCH_NO_QUAD
-            };
-            ComputePipeline::with_constants(
-                &self.gpu,
-                &variant.name(),
-                spirv,
-                &RAYMARCH_BINDINGS,
-                0,
-                &variant.constants(),
-            )
-        })
-    }
-
-    /// What the renderer does on this device.
-    pub fn features(&self) -> crate::render::Features {
-        self.features
-    }
-
-    /// The ray-march pipelines one frame of `variant` runs on this device
-    /// ([`raymarch::Variant::stages`]), split if `split` and the device can.
-    pub fn raymarch_stages(
-        &self,
-        variant: raymarch::Variant,
-        split: bool,
-    ) -> Vec<raymarch::Variant> {
-        variant.stages(split && self.features.disk_split)
-    }
-
-    /// The composite specialised for its output, tone map, bloom and
-    /// upscaling (composite.comp's constants), built on first use and kept.
-    pub fn composite(&self, variant: composite::Variant) -> Result<Arc<ComputePipeline>> {
-        self.composite.get(variant, || {
-            let spirv = if variant.linear {
-                crate::shaders::COMPOSITE_HDR
-            } else {
-                crate::shaders::COMPOSITE
-            };
-            let bindings = [
-                BindingKind::SampledImage,
-                BindingKind::StorageImage,
-                BindingKind::SampledImage,
-                BindingKind::StorageBuffer,
-            ];
-            ComputePipeline::with_constants(
-                &self.gpu,
-                &format!("{variant:?}"),
-                spirv,
-                &bindings,
-                std::mem::size_of::<composite::CompositePush>() as u32,
-                &variant.constants(),
-            )
-        })
-    }
+/// A 16-byte storage buffer bound where a pass's optional buffer is absent
+/// (a shader's specialisation then never reads it).
+pub(crate) fn placeholder_buffer(gpu: &Arc<Gpu>) -> Result<crate::vk::Buffer> {
+    crate::vk::Buffer::new(
+        gpu,
+        "placeholder",
+        16,
+        ash::vk::BufferUsageFlags::STORAGE_BUFFER,
+        gpu_allocator::MemoryLocation::GpuOnly,
+    )
 }
 
 /// Binds `pipeline` with `descriptors`, pushes `push` (if any) and dispatches

@@ -7,6 +7,7 @@
 pub mod features;
 pub mod noise;
 mod offscreen;
+pub mod pipelines;
 pub mod recipe;
 pub mod resources;
 pub mod slots;
@@ -17,13 +18,14 @@ use std::sync::Arc;
 use ash::vk;
 
 pub use features::Features;
+pub use pipelines::Pipelines;
 pub use recipe::{Accumulation, HdrSource, PostSettings, add_frame};
 pub use slots::{FRAMES_IN_FLIGHT, FrameSlot};
 pub use window::{Overlay, SwapchainTarget, ViewOptions};
 
 use crate::frame::OutputKind;
 use crate::graph::{Graph, ImageHandle};
-use crate::passes::{self, Pipelines, raymarch};
+use crate::passes::{self, raymarch};
 use crate::scene::Scene;
 use crate::vk::{Access, BufferBinding, Gpu, Image, ImageBinding, ImageDesc, Validation};
 use crate::{Error, Result};
@@ -203,8 +205,8 @@ impl Renderer {
         // split and whole, as a moving camera may need either.
         let variant = raymarch::Variant::of(scene, false);
         for split in [true, false] {
-            for stage in self.pipelines.raymarch_stages(variant, split) {
-                self.pipelines.raymarch(stage)?;
+            for stage in self.pipelines.raymarch.stages(variant, split) {
+                self.pipelines.raymarch.pipeline(stage)?;
             }
         }
         Ok(())

@@ -7,6 +7,7 @@
 use ash::vk;
 use gpu_allocator::MemoryLocation;
 
+use super::Pipelines;
 use super::resources::SceneResources;
 use super::{
     Accumulation, HdrSource, PostSettings, Renderer, add_frame, add_scene_frame, halton,
@@ -14,7 +15,7 @@ use super::{
 };
 use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
 use crate::graph::{Graph, ImageHandle};
-use crate::passes::{Pipelines, copy};
+use crate::passes::copy;
 use crate::scene::{DiskKind, Scene};
 use crate::vk::{Access, Buffer, BufferBinding, ImageBinding, ImageDesc};
 use crate::{Error, Result};

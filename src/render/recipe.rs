@@ -5,9 +5,10 @@
 //! the result (a readback, a blit to the swapchain, a GUI on top) is added
 //! after it by the caller.
 
+use super::Pipelines;
 use crate::frame::OutputKind;
 use crate::graph::{BufferHandle, Graph, ImageHandle};
-use crate::passes::{self, Pipelines, composite, raymarch};
+use crate::passes::{self, composite, raymarch};
 use crate::scene::{Bloom, Post, Scene};
 
 /// Where the frame's linear HDR radiance comes from.
@@ -57,7 +58,7 @@ pub fn add_frame<'a>(
             size,
         } => raymarch::add_raymarch(
             graph,
-            pipelines,
+            &pipelines.raymarch,
             raymarch::RaymarchInputs {
                 params,
                 images,
@@ -78,7 +79,7 @@ pub fn add_frame<'a>(
     }
     let hdr = match accumulation {
         Some(Accumulation { mean, index }) => {
-            passes::accumulate::add_accumulate(graph, pipelines, &hdr, mean, index);
+            passes::accumulate::add_accumulate(graph, &pipelines.accumulate, &hdr, mean, index);
             mean.clone()
         }
         None => hdr,
@@ -87,11 +88,11 @@ pub fn add_frame<'a>(
         // The ray march's radiance, or with accumulation the running mean.
         return hdr;
     }
-    let bloom = passes::bloom::add_bloom(graph, pipelines, &hdr, settings.bloom);
-    let exposure = passes::exposure::add_exposure(graph, pipelines, &hdr, settings.post);
+    let bloom = passes::bloom::add_bloom(graph, &pipelines.bloom, &hdr, settings.bloom);
+    let exposure = passes::exposure::add_exposure(graph, &pipelines.exposure, &hdr, settings.post);
     composite::add_composite(
         graph,
-        pipelines,
+        &pipelines.composite,
         &hdr,
         composite::CompositeInputs {
             bloom: bloom.as_ref(),

@@ -26,11 +26,16 @@ pub mod params;
 pub use params::{FrameSpec, RaymarchParams};
 use params::{disk_kind, sky_kind};
 
-use super::{Pipelines, dispatch_2d, dispatch_indirect};
+use std::sync::Arc;
+
+use super::{VariantCache, dispatch_2d, dispatch_indirect};
+use crate::Result;
 use crate::graph::{BufferHandle, Graph, ImageDesc, ImageHandle, Mips};
+use crate::render::Features;
 use crate::scene::{DiskKind, Scene, VolumeColor};
+use crate::shaders::{RAYMARCH, RAYMARCH_AOV, RAYMARCH_NO_QUAD, RAYMARCH_SPLIT};
 use crate::spacetime::{GpuPath, Spacetime};
-use crate::vk::{Access, Descriptor};
+use crate::vk::{Access, BindingKind, Buffer, ComputePipeline, Descriptor, Gpu, Sampler};
 
 /// Constants mirrored from `shaders/include/params.glsl` (tests/layout.rs
 /// checks them against the GLSL source).
@@ -258,10 +263,93 @@ impl Variant {
     }
 }
 
+/// The parameter block is a read-only storage buffer, not a uniform buffer:
+/// on Mesa's lavapipe (22.3) every dispatch that read a uniform buffer
+/// leaked about 0.55 MB inside the driver until the device was destroyed
+/// (1,000 frames at 160x90 took 640 MB; the same with a storage buffer, 120
+/// MB) and cost twice the time. Found by skipping one pass's dispatch at a
+/// time. Bindings 6 and 7 are the split thin-disk ray march's work list and
+/// indirect dispatch.
+const RAYMARCH_BINDINGS: [BindingKind; 8] = [
+    BindingKind::StorageImage,
+    BindingKind::StorageBuffer,
+    BindingKind::SampledImage,
+    BindingKind::SampledImage,
+    BindingKind::SampledImage,
+    BindingKind::SampledImage,
+    BindingKind::StorageBuffer,
+    BindingKind::StorageBuffer,
+];
+
+/// The ray march's pipelines by variant (built the first time a scene needs
+/// one), its samplers and the buffer bound where a stage's work list is
+/// absent, owned by this pass; and what the renderer does on this device.
+pub struct RaymarchPipelines {
+    cache: VariantCache<Variant>,
+    gpu: Arc<Gpu>,
+    features: Features,
+    linear_clamp: Sampler,
+    sky_sampler: Sampler,
+    repeat_sampler: Sampler,
+    placeholder: Buffer,
+}
+
+impl RaymarchPipelines {
+    pub fn new(gpu: &Arc<Gpu>, features: Features) -> Result<Self> {
+        Ok(RaymarchPipelines {
+            cache: VariantCache::new(),
+            gpu: gpu.clone(),
+            features,
+            linear_clamp: Sampler::linear_clamp(gpu)?,
+            sky_sampler: Sampler::linear_repeat_u(gpu)?,
+            repeat_sampler: Sampler::linear_repeat(gpu)?,
+            placeholder: super::placeholder_buffer(gpu)?,
+        })
+    }
+
+    /// The ray march specialised for a scene's variant (the specialization
+    /// constants of include/variant.glsl), built on first use and kept. Code
+    /// a scene does not use is compiled out, not just skipped: on a CPU
+    /// driver such as lavapipe every branch runs under a mask for every
+    /// pixel, so a branch not taken costs as much as one taken.
+    pub fn pipeline(&self, variant: Variant) -> Result<Arc<ComputePipeline>> {
+        self.cache.get(variant, || {
+            let spirv = if variant.aov {
+                RAYMARCH_AOV
+            } else if variant.disk_stage != glsl::DISK_STAGE_ALL {
+                RAYMARCH_SPLIT
+            } else if self.features.ray_differentials {
+                RAYMARCH
+            } else {
+                RAYMARCH_NO_QUAD
+            };
+            ComputePipeline::with_constants(
+                &self.gpu,
+                &variant.name(),
+                spirv,
+                &RAYMARCH_BINDINGS,
+                0,
+                &variant.constants(),
+            )
+        })
+    }
+
+    /// What the renderer does on this device.
+    pub fn features(&self) -> Features {
+        self.features
+    }
+
+    /// The ray-march pipelines one frame of `variant` runs on this device
+    /// ([`Variant::stages`]), split if `split` and the device can.
+    pub fn stages(&self, variant: Variant, split: bool) -> Vec<Variant> {
+        variant.stages(split && self.features.disk_split)
+    }
+}
+
 /// Adds the ray march; returns the HDR image (or the AOV) it writes.
 pub fn add_raymarch<'a>(
     graph: &mut Graph<'a>,
-    pipelines: &'a Pipelines,
+    pipelines: &'a RaymarchPipelines,
     inputs: RaymarchInputs<'_>,
 ) -> ImageHandle {
     let RaymarchInputs {
@@ -281,7 +369,7 @@ pub fn add_raymarch<'a>(
     let stage = |graph: &mut Graph<'a>, hdr: &mut ImageHandle, variant, stage: Stage<'_>| {
         add_stage(graph, pipelines, params, images, hdr, variant, stage);
     };
-    let stages = pipelines.raymarch_stages(variant, split);
+    let stages = pipelines.stages(variant, split);
     let [trace, disk] = stages[..] else {
         stage(graph, &mut hdr, variant, Stage::Whole);
         return hdr;
@@ -339,7 +427,7 @@ enum Stage<'w> {
 /// Adds one ray-march dispatch of `variant` writing `hdr`.
 fn add_stage<'a>(
     graph: &mut Graph<'a>,
-    pipelines: &'a Pipelines,
+    pipelines: &'a RaymarchPipelines,
     params: &BufferHandle,
     images: &SceneImages,
     hdr: &mut ImageHandle,
@@ -392,13 +480,13 @@ fn add_stage<'a>(
     };
     pass.write(hdr, hdr_access, Mips::ALL).record(move |ctx| {
         // Built on first use (Renderer::prepare_scene builds it ahead).
-        let pipeline = pipelines.raymarch(variant)?;
+        let pipeline = pipelines.pipeline(variant)?;
         let repeat = pipelines.repeat_sampler.sampler;
         // Without the split its buffers are never read.
         let (list, dispatch) = match &buffers {
             Some((l, d)) => (ctx.buffer(l), ctx.buffer(d)),
             None => {
-                let placeholder = pipelines.placeholder_buffer.buffer;
+                let placeholder = pipelines.placeholder.buffer;
                 (placeholder, placeholder)
             }
         };
