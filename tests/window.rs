@@ -27,8 +27,12 @@ fn display() -> String {
                 }
             }
             let d = format!(":{}", 90 + std::process::id() % 9);
-            let child = Command::new("Xvfb")
+            // Under `timeout`: nothing ends it with the test process (it is
+            // shared by the tests), so it ends itself well after the suite.
+            let child = Command::new("timeout")
                 .args([
+                    "900",
+                    "Xvfb",
                     d.as_str(),
                     "-screen",
                     "0",
@@ -40,7 +44,7 @@ fn display() -> String {
                 .stderr(Stdio::null())
                 .spawn()
                 .expect("Xvfb runs (apt-get install xvfb)");
-            // Left running for the other tests; it ends with the test process's session.
+            // Left running for the other tests.
             std::mem::forget(child);
             std::thread::sleep(Duration::from_millis(1500));
             d
