@@ -271,7 +271,8 @@ fn two_quick_signals_leave_no_temporary_and_say_what_was_written() {
     let out = path_in(&dir, "s.exr");
     let mut c = blackhole();
     c.args([
-        "render", "--width", "640", "--height", "360", "--spp", "16", "--frames", "0..40", "--out",
+        "render", "--width", "640", "--height", "360", "--spp", "16", "--frames", "0..1000",
+        "--out",
     ])
     .arg(&out)
     .stdout(std::process::Stdio::piped())
