@@ -285,6 +285,18 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
     ] {
         assert_eq!(define(params, name), f64::from(kind as u32), "{name}");
     }
+    // The largest light a 16-bit float image holds: the sky is clamped to
+    // it on load, every store of light in the shaders to the same.
+    let color = include_str!("../shaders/include/color.glsl");
+    assert_eq!(
+        define(color, "HALF_MAX"),
+        f64::from(blackhole::sky::MAX_SKY_VALUE)
+    );
+    assert_eq!(
+        blackhole::sky::MAX_SKY_VALUE,
+        half::f16::MAX.to_f32(),
+        "the largest finite half float"
+    );
     // Packed and tabulated data the host builds for the shaders.
     let sky = include_str!("../shaders/include/sky.glsl");
     assert_eq!(

@@ -12,7 +12,7 @@ float luminance(vec3 c) {
 // would be stored as infinity), so no pixel carries NaN or infinity into
 // bloom, exposure or the output. Every store of light into a 16-bit float
 // image goes through it.
-const float HALF_MAX = 65504.0;
+#define HALF_MAX 65504.0  // sky.rs MAX_SKY_VALUE (tests/layout.rs)
 vec3 storable(vec3 c) {
     return clamp(mix(c, vec3(0.0), isnan(c)), vec3(0.0), vec3(HALF_MAX));
 }

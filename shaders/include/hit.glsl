@@ -20,6 +20,20 @@ struct Hit {
     bool disk_ahead; // the trace pass left thin-disk crossings to the disk pass
 };
 
+// A path's hit before it has gone anywhere: `outcome` until the path says
+// otherwise, at `pos` heading along `dir`, no disk light gathered yet.
+Hit hit_start(int outcome, vec3 pos, vec3 dir) {
+    Hit hit;
+    hit.outcome = outcome;
+    hit.pos = pos;
+    hit.dir = dir;
+    hit.g = 0.0;
+    hit.glow = vec3(0.0);
+    hit.trans = 1.0;
+    hit.disk_ahead = false;
+    return hit;
+}
+
 bool volumetric() {
     return DISK_KIND == DISK_VOLUME;
 }

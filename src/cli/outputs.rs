@@ -27,7 +27,7 @@ impl Output<'_> {
     /// Checks the output (and, with `frames`, every numbered file of the
     /// sequence) against the rules above.
     pub fn check(&self, inputs: &[PathBuf], frames: Option<&Range<u64>>) -> Result<()> {
-        let ext = extension(self.path);
+        let ext = crate::output::extension(self.path);
         if !self.extensions.contains(&ext.as_str()) {
             let list: Vec<String> = self.extensions.iter().map(|e| format!(".{e}")).collect();
             let shown = if ext.is_empty() {
@@ -59,13 +59,6 @@ impl Output<'_> {
         }
         Ok(())
     }
-}
-
-/// The extension of `path`, lower case ("" if none).
-pub fn extension(path: &Path) -> String {
-    path.extension()
-        .map(|e| e.to_string_lossy().to_lowercase())
-        .unwrap_or_default()
 }
 
 /// The folder the output goes to must exist and take a file (a probe file is

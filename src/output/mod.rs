@@ -17,10 +17,7 @@ pub enum FileFormat {
 impl FileFormat {
     /// The format named by `path`'s extension.
     pub fn from_path(path: &Path) -> Result<Self> {
-        let ext = path
-            .extension()
-            .map(|e| e.to_string_lossy().to_lowercase())
-            .unwrap_or_default();
+        let ext = extension(path);
         match ext.as_str() {
             "png" => Ok(FileFormat::Png),
             "exr" => Ok(FileFormat::Exr),
@@ -38,6 +35,13 @@ impl FileFormat {
             FileFormat::Exr => OutputKind::Hdr,
         }
     }
+}
+
+/// The extension of `path`, lower case ("" if none).
+pub fn extension(path: &Path) -> String {
+    path.extension()
+        .map(|e| e.to_string_lossy().to_lowercase())
+        .unwrap_or_default()
 }
 
 fn temp_path(path: &Path) -> PathBuf {

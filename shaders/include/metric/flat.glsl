@@ -15,14 +15,7 @@
 // gathered along the part of the line inside the slab, in chords of at most
 // 16 samples (the step-by-step path's spacing), up to the horizon.
 Hit trace_straight(vec3 x, vec3 d) {
-    Hit hit;
-    hit.outcome = OUT_ESCAPED;
-    hit.pos = x;
-    hit.dir = d;
-    hit.g = 0.0;
-    hit.glow = vec3(0.0);
-    hit.trans = 1.0;
-    hit.disk_ahead = false;
+    Hit hit = hit_start(OUT_ESCAPED, x, d);
     float t_h = 1e30;
     for (uint k = 0u; k < P.metric.hole_count; ++k) {
         vec3 rel = x - P.metric.holes[k].xyz;

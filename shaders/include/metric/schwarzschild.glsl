@@ -138,14 +138,7 @@ bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 no
 // u there straight from the formula; escape and capture come from the total
 // sweep; no steps.
 Hit trace_planar(vec3 x, vec3 d) {
-    Hit hit;
-    hit.outcome = OUT_NO_STEPS;
-    hit.pos = vec3(0.0);
-    hit.dir = d;
-    hit.g = 0.0;
-    hit.glow = vec3(0.0);
-    hit.trans = 1.0;
-    hit.disk_ahead = false;
+    Hit hit = hit_start(OUT_NO_STEPS, vec3(0.0), d);
     vec3 c = P.metric.holes[0].xyz;
     float rs = P.metric.holes[0].w;
     vec3 rel = x - c;

@@ -56,14 +56,7 @@ vec3 plane_crossing(vec3 x0, vec3 v0, vec3 x1, vec3 v1, float h) {
 }
 
 Hit trace(vec3 x, vec3 v) {
-    Hit hit;
-    hit.outcome = OUT_NO_STEPS;
-    hit.pos = vec3(0.0);
-    hit.dir = v;
-    hit.g = 0.0;
-    hit.glow = vec3(0.0);
-    hit.trans = 1.0;
-    hit.disk_ahead = false;
+    Hit hit = hit_start(OUT_NO_STEPS, vec3(0.0), v);
     bool vol = volumetric();
     float tol = P.integrator.tolerance;
     float r_esc = P.integrator.escape_radius;
