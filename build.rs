@@ -4,12 +4,49 @@
 use std::path::{Path, PathBuf};
 
 /// Extra builds of a shader with preprocessor macros: (source, output stem, defines).
-const VARIANTS: &[(&str, &str, &[&str])] = &[
-    ("raymarch.comp", "raymarch_aov.comp", &["GEODESIC_AOV"]),
-    ("raymarch.comp", "raymarch_no_quad.comp", &["NO_QUAD"]),
-    ("raymarch.comp", "raymarch_split.comp", &["DISK_SPLIT"]),
-    ("composite.comp", "composite_hdr.comp", &["HDR_OUTPUT"]),
+const VARIANTS: &[(&str, &str, &[&str])] =
+    &[("composite.comp", "composite_hdr.comp", &["HDR_OUTPUT"])];
+
+/// The ray march is built once per metric (shaders/include/metric.glsl) and
+/// kind: (metric define, stem part) x (kind defines, stem part), the split
+/// stages for the closed-form metric only. No plain build: raymarch.comp
+/// needs a metric. src/shaders.rs names each module.
+const METRICS: &[(&str, &str)] = &[
+    ("METRIC_SCHWARZSCHILD", "schwarzschild"),
+    ("METRIC_FLAT", "flat"),
+    ("METRIC_SUMMED", "summed"),
 ];
+const RAYMARCH_KINDS: &[(&[&str], &str)] = &[
+    (&[], ""),
+    (&["GEODESIC_AOV"], "_aov"),
+    (&["NO_QUAD"], "_no_quad"),
+    (&["DISK_SPLIT"], "_split"),
+];
+
+/// Every (output stem, defines) build of the source file `name`.
+fn builds_of(name: &str) -> Vec<(String, Vec<&'static str>)> {
+    if name == "raymarch.comp" {
+        let mut builds = Vec::new();
+        for (metric, m) in METRICS {
+            for (defines, k) in RAYMARCH_KINDS {
+                if *k == "_split" && *metric != "METRIC_SCHWARZSCHILD" {
+                    continue;
+                }
+                let mut d = vec![*metric];
+                d.extend_from_slice(defines);
+                builds.push((format!("raymarch_{m}{k}.comp"), d));
+            }
+        }
+        return builds;
+    }
+    let mut builds = vec![(name.to_owned(), Vec::new())];
+    for (source, stem, defines) in VARIANTS {
+        if *source == name {
+            builds.push((stem.to_string(), defines.to_vec()));
+        }
+    }
+    builds
+}
 
 fn main() {
     if let Err(e) = run() {
@@ -48,19 +85,13 @@ fn run() -> Result<(), String> {
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
-        let mut builds: Vec<(String, &[&str])> = vec![(name.clone(), &[])];
-        for (source, stem, defines) in VARIANTS {
-            if *source == name {
-                builds.push((stem.to_string(), defines));
-            }
-        }
-        for (stem, defines) in builds {
-            match compile(&compiler, src, &include_dir, defines) {
+        for (stem, defines) in builds_of(&name) {
+            match compile(&compiler, src, &include_dir, &defines) {
                 Ok(words) => {
                     let dst = out.join(format!("{stem}.spv"));
                     std::fs::write(&dst, words).map_err(|e| format!("{}: {e}", dst.display()))?;
                 }
-                Err(e) => errors.push(e),
+                Err(e) => errors.push(format!("{stem}: {e}")),
             }
         }
     }

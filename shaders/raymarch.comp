@@ -1,8 +1,9 @@
 #version 460
 // Ray march: one invocation per pixel. Each camera ray follows its light
-// path (closed form for one hole, lightpath.glsl; a straight line with
-// gravity off; else the integrator of geodesic.glsl) until it falls into a
-// horizon, hits the disk or escapes to the sky. Writes linear HDR.
+// path (metric.glsl: closed form for one hole, lightpath.glsl; a straight
+// line with gravity off; else the integrator of geodesic.glsl; one of them
+// per build) until it falls into a horizon, hits the disk or escapes to the
+// sky. Writes linear HDR.
 //
 // With one hole and a thin disk the work is split in two dispatches
 // (DISK_STAGE): the trace pass shades every pixel's sky and lists the pixels
@@ -32,9 +33,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "camera.glsl"
 #include "sky.glsl"
 #include "hit.glsl"
-#include "metric/schwarzschild.glsl"
-#include "metric/flat.glsl"
-#include "metric/summed.glsl"
+#include "metric.glsl"
 
 #ifdef GEODESIC_AOV
 // The geodesic AOV (the geodesic AOV table in the README): where each ray went.
@@ -89,7 +88,7 @@ void disk_pass() {
     uint packed = disk_list.px[i];
     ivec2 px = ivec2(packed & 0xffffu, packed >> 16u);
     PixelRay ray = camera_ray(uvec2(px));
-    Hit hit = trace_planar(ray.origin, ray.dir);
+    Hit hit = metric_trace(ray.origin, ray.dir);
     vec3 behind = hit.trans < 0.003 ? vec3(0.0) : imageLoad(out_img, px).rgb;
     imageStore(out_img, px, vec4(storable(hit.glow + hit.trans * behind), 1.0));
 }
@@ -127,9 +126,7 @@ void main() {
     // by the sub-pixel jitter, zero for a single offscreen frame) so the
     // window's accumulation averages the grain away.
     volume_jitter = hash33(uvec3(px, 7u + floatBitsToUint(P.camera.jitter_x) + 3u * floatBitsToUint(P.camera.jitter_y))).x;
-    Hit hit = ONE_HOLE ? trace_planar(ray.origin, ray.dir)
-            : STRAIGHT ? trace_straight(ray.origin, ray.dir)
-            : trace(ray.origin, ray.dir);
+    Hit hit = metric_trace(ray.origin, ray.dir);
     hit.g *= observer_g;
 #ifdef GEODESIC_AOV
     vec4 aov = vec4(0.0, 0.0, 0.0, float(hit.outcome));
@@ -181,9 +178,10 @@ void main() {
         color = sky_color(hit.dir, fp);
         grid_plane(hit.pos, hit.dir, pixel_angle, color);
     }
-    else if (!ONE_HOLE && hit.outcome == OUT_DISK) {
-        // The general and straight paths' disk (several holes, gravity off): opaque. (The
-        // closed-form path adds the disk's light as it goes; compiled out.)
+    else if (!METRIC_SHADES_DISK && hit.outcome == OUT_DISK) {
+        // The disk where the path stopped at it (several holes, gravity
+        // off): opaque. (The closed-form path adds the disk's light as it
+        // goes.)
         float r = length(hit.pos - P.metric.holes[0].xyz);
         float dens = THIN_STRUCTURE ? thin_disk_density(r, disk_azimuth(hit.pos), P.disk.rotation_time) : 1.0;
         color = dens * disk_color(r, hit.g);

@@ -1,19 +1,51 @@
 //! SPIR-V compiled by build.rs from `shaders/*.comp`, embedded in the binary.
 
-/// The ray march (`shaders/raymarch.comp`).
-pub const RAYMARCH: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/raymarch.comp.spv"));
+use crate::spacetime::GpuPath;
+
+/// Which build of the ray march (`shaders/raymarch.comp`) for a metric.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum RaymarchBuild {
+    /// Linear HDR, star footprints from subgroup quads.
+    Beauty,
+    /// Without subgroup quads (unlensed star footprints), for devices that
+    /// lack quad operations in compute shaders (`NO_QUAD`).
+    NoQuad,
+    /// The geodesic AOV (`GEODESIC_AOV`).
+    Aov,
+    /// The split thin-disk stages (`DISK_SPLIT`: the trace pass that lists
+    /// disk pixels and the indirect disk pass); closed-form metric only.
+    Split,
+}
+
+macro_rules! spv {
+    ($stem:literal) => {
+        include_bytes!(concat!(env!("OUT_DIR"), "/", $stem, ".comp.spv"))
+    };
+}
+
+/// The ray march compiled for one metric (`shaders/include/metric.glsl`,
+/// the define build.rs sets) and one build; `None` for the split stages of
+/// a metric other than the closed form.
+pub fn raymarch(path: GpuPath, build: RaymarchBuild) -> Option<&'static [u8]> {
+    use GpuPath::*;
+    use RaymarchBuild::*;
+    Some(match (path, build) {
+        (ClosedForm, Beauty) => spv!("raymarch_schwarzschild"),
+        (ClosedForm, NoQuad) => spv!("raymarch_schwarzschild_no_quad"),
+        (ClosedForm, Aov) => spv!("raymarch_schwarzschild_aov"),
+        (ClosedForm, Split) => spv!("raymarch_schwarzschild_split"),
+        (Straight, Beauty) => spv!("raymarch_flat"),
+        (Straight, NoQuad) => spv!("raymarch_flat_no_quad"),
+        (Straight, Aov) => spv!("raymarch_flat_aov"),
+        (Integrated, Beauty) => spv!("raymarch_summed"),
+        (Integrated, NoQuad) => spv!("raymarch_summed_no_quad"),
+        (Integrated, Aov) => spv!("raymarch_summed_aov"),
+        (Straight | Integrated, Split) => return None,
+    })
+}
+
 /// The composite (`shaders/composite.comp`).
 pub const COMPOSITE: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/composite.comp.spv"));
-/// The ray march without subgroup quads (unlensed star footprints), for
-/// devices that lack quad operations in compute shaders.
-pub const RAYMARCH_NO_QUAD: &[u8] =
-    include_bytes!(concat!(env!("OUT_DIR"), "/raymarch_no_quad.comp.spv"));
-/// The ray march writing the geodesic AOV (`raymarch.comp` with `GEODESIC_AOV`).
-pub const RAYMARCH_AOV: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/raymarch_aov.comp.spv"));
-/// The ray march's split thin-disk stages (`DISK_SPLIT`: the trace pass
-/// that lists disk pixels and the indirect disk pass).
-pub const RAYMARCH_SPLIT: &[u8] =
-    include_bytes!(concat!(env!("OUT_DIR"), "/raymarch_split.comp.spv"));
 /// Bloom bright pass to a quarter of the size (`shaders/bloom_prefilter.comp`).
 pub const BLOOM_PREFILTER: &[u8] =
     include_bytes!(concat!(env!("OUT_DIR"), "/bloom_prefilter.comp.spv"));

@@ -43,17 +43,21 @@ fn exported(g: &mut Graph<'_>) -> BufferHandle {
 /// passes before it stay alive.
 fn consume(g: &mut Graph<'_>, img: &ImageHandle, mips: Mips) {
     let mut out = exported(g);
-    g.add_pass("consume")
-        .read(img, Access::ComputeSampledRead, mips)
-        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    {
+        let mut p = g.add_pass("consume");
+        p.read(img, Access::ComputeSampledRead, mips);
+        p.write_buffer(&mut out, Access::ComputeStorageWrite);
+    }
 }
 
 #[test]
 fn read_after_write_makes_the_storage_write_visible_and_changes_layout() {
     let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 64, 64));
-    g.add_pass("write")
-        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    {
+        let mut p = g.add_pass("write");
+        p.write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    }
     consume(&mut g, &img, Mips::ALL);
     let c = g.compile().unwrap();
     assert_eq!(c.order, vec![0, 1]);
@@ -88,8 +92,10 @@ fn write_after_read_waits_for_the_reader_without_a_memory_dependency() {
         Access::ComputeStorageRead,
         Some(Access::ComputeStorageRead),
     );
-    g.add_pass("write")
-        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    {
+        let mut p = g.add_pass("write");
+        p.write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    }
     let c = g.compile().unwrap();
     let b = &c.before[0].images;
     assert_eq!(b.len(), 1);
@@ -116,10 +122,14 @@ fn write_after_read_waits_for_the_reader_without_a_memory_dependency() {
 fn write_after_write_orders_the_two_writes() {
     let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
-    g.add_pass("first")
-        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
-    g.add_pass("second")
-        .write(&mut img, Access::ComputeStorageReadWrite, Mips::ALL);
+    {
+        let mut p = g.add_pass("first");
+        p.write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    }
+    {
+        let mut p = g.add_pass("second");
+        p.write(&mut img, Access::ComputeStorageReadWrite, Mips::ALL);
+    }
     consume(&mut g, &img, Mips::ALL);
     let c = g.compile().unwrap();
     assert_eq!(c.order, vec![0, 1, 2]);
@@ -139,16 +149,22 @@ fn second_read_of_a_visible_write_needs_no_barrier() {
     let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
     let mut other = g.create_image("b", ImageDesc::new_2d(FMT, 8, 8));
-    g.add_pass("write")
-        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
-    g.add_pass("read1")
-        .read(&img, Access::ComputeSampledRead, Mips::ALL)
-        .write(&mut other, Access::ComputeStorageWrite, Mips::ALL);
+    {
+        let mut p = g.add_pass("write");
+        p.write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    }
+    {
+        let mut p = g.add_pass("read1");
+        p.read(&img, Access::ComputeSampledRead, Mips::ALL);
+        p.write(&mut other, Access::ComputeStorageWrite, Mips::ALL);
+    }
     let mut out = exported(&mut g);
-    g.add_pass("read2")
-        .read(&img, Access::ComputeSampledRead, Mips::ALL)
-        .read(&other, Access::ComputeSampledRead, Mips::ALL)
-        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    {
+        let mut p = g.add_pass("read2");
+        p.read(&img, Access::ComputeSampledRead, Mips::ALL);
+        p.read(&other, Access::ComputeSampledRead, Mips::ALL);
+        p.write_buffer(&mut out, Access::ComputeStorageWrite);
+    }
     let c = g.compile().unwrap();
     assert_eq!(c.order, vec![0, 1, 2]);
     let img_barriers: Vec<_> = c.before[2].images.iter().filter(|b| b.image == 0).collect();
@@ -161,13 +177,16 @@ fn mip_chain_reading_n_writing_n_plus_1_gets_one_barrier_per_level() {
     let mut g = Graph::new(64, 64);
     let mut img = g.create_image("chain", ImageDesc::new_2d(FMT, 256, 256).with_mips(LEVELS));
     assert_eq!(img.desc.mip_levels, LEVELS);
-    g.add_pass("mip0")
-        .write(&mut img, Access::ComputeStorageWrite, Mips::one(0));
+    {
+        let mut p = g.add_pass("mip0");
+        p.write(&mut img, Access::ComputeStorageWrite, Mips::one(0));
+    }
     for n in 0..LEVELS - 1 {
-        let src = img.clone();
-        g.add_pass(&format!("down{n}"))
-            .read(&src, Access::ComputeSampledRead, Mips::one(n))
-            .write(&mut img, Access::ComputeStorageWrite, Mips::one(n + 1));
+        {
+            let mut p = g.add_pass(&format!("down{n}"));
+            p.read(&img, Access::ComputeSampledRead, Mips::one(n));
+            p.write(&mut img, Access::ComputeStorageWrite, Mips::one(n + 1));
+        }
     }
     consume(&mut g, &img, Mips::one(LEVELS - 1));
     let c = g.compile().unwrap();
@@ -216,8 +235,10 @@ fn mip_chain_reading_n_writing_n_plus_1_gets_one_barrier_per_level() {
 fn adjacent_levels_with_identical_barriers_merge_into_one_range() {
     let mut g = Graph::new(64, 64);
     let mut img = g.create_image("m", ImageDesc::new_2d(FMT, 64, 64).with_mips(6));
-    g.add_pass("all")
-        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    {
+        let mut p = g.add_pass("all");
+        p.write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    }
     consume(&mut g, &img, Mips::ALL);
     let c = g.compile().unwrap();
     assert_eq!(c.before[0].images.len(), 1);
@@ -237,10 +258,14 @@ fn pass_whose_output_nobody_reads_is_culled() {
     let mut g = Graph::new(64, 64);
     let mut used = g.create_image("used", ImageDesc::new_2d(FMT, 8, 8));
     let mut unused = g.create_image("unused", ImageDesc::new_2d(FMT, 8, 8));
-    g.add_pass("useful")
-        .write(&mut used, Access::ComputeStorageWrite, Mips::ALL);
-    g.add_pass("wasted")
-        .write(&mut unused, Access::ComputeStorageWrite, Mips::ALL);
+    {
+        let mut p = g.add_pass("useful");
+        p.write(&mut used, Access::ComputeStorageWrite, Mips::ALL);
+    }
+    {
+        let mut p = g.add_pass("wasted");
+        p.write(&mut unused, Access::ComputeStorageWrite, Mips::ALL);
+    }
     consume(&mut g, &used, Mips::ALL);
     let c = g.compile().unwrap();
     assert_eq!(c.order, vec![0, 2]);
@@ -254,10 +279,14 @@ fn pass_whose_output_nobody_reads_is_culled() {
 fn culling_is_per_mip_level() {
     let mut g = Graph::new(64, 64);
     let mut img = g.create_image("m", ImageDesc::new_2d(FMT, 64, 64).with_mips(2));
-    g.add_pass("level0")
-        .write(&mut img, Access::ComputeStorageWrite, Mips::one(0));
-    g.add_pass("level1")
-        .write(&mut img, Access::ComputeStorageWrite, Mips::one(1));
+    {
+        let mut p = g.add_pass("level0");
+        p.write(&mut img, Access::ComputeStorageWrite, Mips::one(0));
+    }
+    {
+        let mut p = g.add_pass("level1");
+        p.write(&mut img, Access::ComputeStorageWrite, Mips::one(1));
+    }
     consume(&mut g, &img, Mips::one(0));
     let c = g.compile().unwrap();
     assert_eq!(c.order, vec![0, 2]);
@@ -274,8 +303,10 @@ fn imported_image_is_left_in_its_requested_final_layout() {
         Access::Nothing,
         Some(Access::Present),
     );
-    g.add_pass("draw")
-        .write(&mut target, Access::ComputeStorageWrite, Mips::ALL);
+    {
+        let mut p = g.add_pass("draw");
+        p.write(&mut target, Access::ComputeStorageWrite, Mips::ALL);
+    }
     let c = g.compile().unwrap();
     assert_eq!(c.order, vec![0], "a pass writing an exported image is kept");
     let after = &c.after.images;
@@ -292,11 +323,15 @@ fn readback_buffer_is_made_visible_to_the_host() {
     let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
     let mut buf = g.import_buffer("rb", fake_buffer(), Access::Nothing, Some(Access::HostRead));
-    g.add_pass("write")
-        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
-    g.add_pass("copy")
-        .read(&img, Access::TransferRead, Mips::one(0))
-        .write_buffer(&mut buf, Access::TransferWrite);
+    {
+        let mut p = g.add_pass("write");
+        p.write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    }
+    {
+        let mut p = g.add_pass("copy");
+        p.read(&img, Access::TransferRead, Mips::one(0));
+        p.write_buffer(&mut buf, Access::TransferWrite);
+    }
     let c = g.compile().unwrap();
     assert_eq!(c.before[1].images[0].new_layout, L::TRANSFER_SRC_OPTIMAL);
     assert_eq!(c.after.buffers.len(), 1);
@@ -313,15 +348,21 @@ fn usage_flags_are_derived_from_declared_accesses() {
     let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
     let mut buf = g.import_buffer("rb", fake_buffer(), Access::Nothing, Some(Access::HostRead));
-    g.add_pass("write")
-        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    {
+        let mut p = g.add_pass("write");
+        p.write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    }
     let mut other = g.create_image("b", ImageDesc::new_2d(FMT, 8, 8));
-    g.add_pass("sample")
-        .read(&img, Access::ComputeSampledRead, Mips::ALL)
-        .write(&mut other, Access::ComputeStorageWrite, Mips::ALL);
-    g.add_pass("copy")
-        .read(&other, Access::TransferRead, Mips::ALL)
-        .write_buffer(&mut buf, Access::TransferWrite);
+    {
+        let mut p = g.add_pass("sample");
+        p.read(&img, Access::ComputeSampledRead, Mips::ALL);
+        p.write(&mut other, Access::ComputeStorageWrite, Mips::ALL);
+    }
+    {
+        let mut p = g.add_pass("copy");
+        p.read(&other, Access::TransferRead, Mips::ALL);
+        p.write_buffer(&mut buf, Access::TransferWrite);
+    }
     let c = g.compile().unwrap();
     use vk::ImageUsageFlags as U;
     assert_eq!(c.image_usage[0], U::STORAGE | U::SAMPLED);
@@ -333,8 +374,10 @@ fn usage_flags_are_derived_from_declared_accesses() {
 fn a_mip_outside_the_image_is_a_build_error() {
     let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8).with_mips(2));
-    g.add_pass("bad")
-        .write(&mut img, Access::ComputeStorageWrite, Mips::one(5));
+    {
+        let mut p = g.add_pass("bad");
+        p.write(&mut img, Access::ComputeStorageWrite, Mips::one(5));
+    }
     consume(&mut g, &img, Mips::ALL);
     let e = g.compile().unwrap_err().to_string();
     assert!(e.contains("bad") && e.contains("outside"), "{e}");
@@ -344,10 +387,11 @@ fn a_mip_outside_the_image_is_a_build_error() {
 fn the_same_mip_declared_twice_in_one_pass_is_a_build_error() {
     let mut g = Graph::new(64, 64);
     let mut img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
-    let r = img.clone();
-    g.add_pass("twice")
-        .read(&r, Access::ComputeSampledRead, Mips::ALL)
-        .write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    {
+        let mut p = g.add_pass("twice");
+        p.read(&img, Access::ComputeSampledRead, Mips::ALL);
+        p.write(&mut img, Access::ComputeStorageWrite, Mips::ALL);
+    }
     consume(&mut g, &img, Mips::ALL);
     assert!(g.compile().is_err());
 }
@@ -437,13 +481,20 @@ fn write_then_compute_then_fragment(first: Access) -> blackhole::graph::Compiled
         Access::Nothing,
         Some(Access::TransferRead),
     );
-    g.add_pass("write").write(&mut img, first, Mips::ALL);
-    g.add_pass("compute read")
-        .read(&img, Access::ComputeSampledRead, Mips::ALL)
-        .write_buffer(&mut out, Access::ComputeStorageWrite);
-    g.add_pass("fragment read")
-        .read(&img, Access::FragmentSampledRead, Mips::ALL)
-        .write(&mut out2, Access::ColorAttachmentWrite, Mips::ALL);
+    {
+        let mut p = g.add_pass("write");
+        p.write(&mut img, first, Mips::ALL);
+    }
+    {
+        let mut p = g.add_pass("compute read");
+        p.read(&img, Access::ComputeSampledRead, Mips::ALL);
+        p.write_buffer(&mut out, Access::ComputeStorageWrite);
+    }
+    {
+        let mut p = g.add_pass("fragment read");
+        p.read(&img, Access::FragmentSampledRead, Mips::ALL);
+        p.write(&mut out2, Access::ColorAttachmentWrite, Mips::ALL);
+    }
     g.compile().unwrap()
 }
 
@@ -486,11 +537,15 @@ fn compute_write_of_a_buffer_then_storage_read_makes_the_write_visible_to_the_re
     let mut g = Graph::new(8, 8);
     let mut buf = g.import_buffer("params", fake_buffer(), Access::Nothing, None);
     let mut out = exported(&mut g);
-    g.add_pass("write")
-        .write_buffer(&mut buf, Access::ComputeStorageWrite);
-    g.add_pass("read")
-        .read_buffer(&buf, Access::ComputeStorageRead)
-        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    {
+        let mut p = g.add_pass("write");
+        p.write_buffer(&mut buf, Access::ComputeStorageWrite);
+    }
+    {
+        let mut p = g.add_pass("read");
+        p.read_buffer(&buf, Access::ComputeStorageRead);
+        p.write_buffer(&mut out, Access::ComputeStorageWrite);
+    }
     let c = g.compile().unwrap();
     assert_eq!(c.order, vec![0, 1]);
     assert_sources_valid(&c);
@@ -515,9 +570,11 @@ fn host_written_parameters_are_made_visible_to_the_storage_read() {
     let mut g = Graph::new(8, 8);
     let params = g.import_buffer("params", fake_buffer(), Access::HostWrite, None);
     let mut out = exported(&mut g);
-    g.add_pass("read")
-        .read_buffer(&params, Access::ComputeStorageRead)
-        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    {
+        let mut p = g.add_pass("read");
+        p.read_buffer(&params, Access::ComputeStorageRead);
+        p.write_buffer(&mut out, Access::ComputeStorageWrite);
+    }
     let c = g.compile().unwrap();
     assert_sources_valid(&c);
     let b: Vec<_> = c.before[0]
@@ -547,9 +604,11 @@ fn read_write_of_an_unwritten_transient_is_refused_too() {
     let mut g = Graph::new(8, 8);
     let mut img = g.create_image("acc", ImageDesc::new_2d(FMT, 8, 8));
     let mut out = exported(&mut g);
-    g.add_pass("accumulate")
-        .write(&mut img, Access::ComputeStorageReadWrite, Mips::ALL)
-        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    {
+        let mut p = g.add_pass("accumulate");
+        p.write(&mut img, Access::ComputeStorageReadWrite, Mips::ALL);
+        p.write_buffer(&mut out, Access::ComputeStorageWrite);
+    }
     assert!(g.compile().is_err());
 }
 
@@ -562,16 +621,22 @@ fn a_cleared_then_appended_transient_buffer_is_visible_to_the_indirect_dispatch_
     let mut args = g.create_buffer("args", 16);
     let mut list = g.create_buffer("list", 256);
     let mut out = exported(&mut g);
-    g.add_pass("clear")
-        .write_buffer(&mut args, Access::TransferWrite)
-        .write_buffer(&mut list, Access::TransferWrite);
-    g.add_pass("append")
-        .write_buffer(&mut args, Access::ComputeStorageReadWrite)
-        .write_buffer(&mut list, Access::ComputeStorageReadWrite);
-    g.add_pass("indirect")
-        .read_buffer(&args, Access::IndirectRead)
-        .read_buffer(&list, Access::ComputeStorageRead)
-        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    {
+        let mut p = g.add_pass("clear");
+        p.write_buffer(&mut args, Access::TransferWrite);
+        p.write_buffer(&mut list, Access::TransferWrite);
+    }
+    {
+        let mut p = g.add_pass("append");
+        p.write_buffer(&mut args, Access::ComputeStorageReadWrite);
+        p.write_buffer(&mut list, Access::ComputeStorageReadWrite);
+    }
+    {
+        let mut p = g.add_pass("indirect");
+        p.read_buffer(&args, Access::IndirectRead);
+        p.read_buffer(&list, Access::ComputeStorageRead);
+        p.write_buffer(&mut out, Access::ComputeStorageWrite);
+    }
     let c = g.compile().unwrap();
     assert_eq!(c.order, vec![0, 1, 2]);
     assert_sources_valid(&c);
@@ -633,9 +698,11 @@ fn reading_a_transient_buffer_before_anything_wrote_it_is_refused() {
     let mut g = Graph::new(8, 8);
     let args = g.create_buffer("never filled", 16);
     let mut out = exported(&mut g);
-    g.add_pass("indirect")
-        .read_buffer(&args, Access::IndirectRead)
-        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    {
+        let mut p = g.add_pass("indirect");
+        p.read_buffer(&args, Access::IndirectRead);
+        p.write_buffer(&mut out, Access::ComputeStorageWrite);
+    }
     let e = g.compile().unwrap_err().to_string();
     assert!(
         e.contains("never filled") && e.contains("before any pass wrote it"),
@@ -648,9 +715,11 @@ fn indirect_arguments_are_a_buffer_access_only() {
     let mut g = Graph::new(8, 8);
     let img = g.create_image("a", ImageDesc::new_2d(FMT, 8, 8));
     let mut out = exported(&mut g);
-    g.add_pass("bad")
-        .read(&img, Access::IndirectRead, Mips::ALL)
-        .write_buffer(&mut out, Access::ComputeStorageWrite);
+    {
+        let mut p = g.add_pass("bad");
+        p.read(&img, Access::IndirectRead, Mips::ALL);
+        p.write_buffer(&mut out, Access::ComputeStorageWrite);
+    }
     assert!(g.compile().is_err());
 }
 
@@ -659,8 +728,10 @@ fn acquired_swapchain_image_chains_to_the_acquire_wait_and_leaves_for_present() 
     let mut g = Graph::new(8, 8);
     let ldr = {
         let mut i = g.create_image("ldr", ImageDesc::new_2d(FMT, 8, 8));
-        g.add_pass("composite")
-            .write(&mut i, Access::ComputeStorageWrite, Mips::ALL);
+        {
+            let mut p = g.add_pass("composite");
+            p.write(&mut i, Access::ComputeStorageWrite, Mips::ALL);
+        }
         i
     };
     let mut sc = g.import_image(
@@ -670,11 +741,15 @@ fn acquired_swapchain_image_chains_to_the_acquire_wait_and_leaves_for_present() 
         Access::Acquired,
         Some(Access::Present),
     );
-    g.add_pass("present blit")
-        .read(&ldr, Access::TransferRead, Mips::ALL)
-        .write(&mut sc, Access::TransferWrite, Mips::ALL);
-    g.add_pass("gui")
-        .write(&mut sc, Access::ColorAttachmentWrite, Mips::ALL);
+    {
+        let mut p = g.add_pass("present blit");
+        p.read(&ldr, Access::TransferRead, Mips::ALL);
+        p.write(&mut sc, Access::TransferWrite, Mips::ALL);
+    }
+    {
+        let mut p = g.add_pass("gui");
+        p.write(&mut sc, Access::ColorAttachmentWrite, Mips::ALL);
+    }
     let c = g.compile().unwrap();
     assert_eq!(c.order, vec![0, 1, 2]);
     assert_sources_valid(&c);
@@ -726,12 +801,14 @@ fn no_barrier_of_a_long_mixed_chain_names_an_access_its_stage_cannot_perform() {
                     Some(Access::ComputeSampledRead),
                 );
                 let mut out = exported(&mut g);
-                g.add_pass("w").write(&mut img, w, Mips::ALL);
+                {
+                    let mut p = g.add_pass("w");
+                    p.write(&mut img, w, Mips::ALL);
+                }
                 for (n, a) in [("1", r1), ("2", r2)] {
                     // Readers also write an exported buffer, so none is culled.
-                    let p = g
-                        .add_pass(n)
-                        .write_buffer(&mut out, Access::ComputeStorageWrite);
+                    let mut p = g.add_pass(n);
+                    p.write_buffer(&mut out, Access::ComputeStorageWrite);
                     if a.info().writes {
                         p.write(&mut img, a, Mips::ALL);
                     } else {

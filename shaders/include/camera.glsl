@@ -13,6 +13,7 @@
 #include "params.glsl"
 #include "variant.glsl"
 #include "ray_state.glsl"
+#include "metric.glsl"
 
 // A pixel's ray.
 struct PixelRay {
@@ -39,11 +40,13 @@ PixelRay pinhole(uvec2 px) {
 }
 
 // A direction measured in the observer's own frame (src/physics/observer.rs)
-// as a coordinate direction: aberration by its velocity into the static
-// frame, then the static frame's radial squeeze; its clock and motion scale
-// the redshift it measures (observer_g).
-vec3 observer_to_coordinate(vec3 dir) {
+// at `origin` as a coordinate direction: aberration by its velocity into the
+// static frame there (the metric's, metric_static_frame), then that frame's
+// radial squeeze; its clock and motion scale the redshift it measures
+// (observer_g, observer_lapse).
+vec3 observer_to_coordinate(vec3 origin, vec3 dir) {
     if (int(P.observer.kind) != OBS_FLAT) {
+        StaticFrame frame = metric_static_frame(origin);
         vec3 beta = P.observer.velocity;
         float b2 = dot(beta, beta);
         float doppler = 1.0;
@@ -53,10 +56,11 @@ vec3 observer_to_coordinate(vec3 dir) {
             dir = normalize((dir / gam - beta + (gam / (gam + 1.0)) * bd * beta) / (1.0 - bd));
             doppler = gam * (1.0 + dot(beta, dir));
         }
-        vec3 rh = P.observer.radial;
+        vec3 rh = frame.radial;
         float dr = dot(dir, rh);
-        dir = normalize(P.observer.lapse * dr * rh + (dir - dr * rh));
-        observer_g = doppler / P.observer.lapse;
+        dir = normalize(frame.lapse * dr * rh + (dir - dr * rh));
+        observer_lapse = frame.lapse;
+        observer_g = doppler / frame.lapse;
     }
     return dir;
 }
@@ -64,7 +68,7 @@ vec3 observer_to_coordinate(vec3 dir) {
 // Pixel px's ray with its coordinate direction; sets observer_g.
 PixelRay camera_ray(uvec2 px) {
     PixelRay ray = pinhole(px);
-    ray.dir = observer_to_coordinate(ray.dir);
+    ray.dir = observer_to_coordinate(ray.origin, ray.dir);
     return ray;
 }
 

@@ -7,6 +7,7 @@
 
 #include "params.glsl"
 #include "blackbody.glsl"
+#include "ray_state.glsl"
 
 // The redshift g = nu_obs / nu_emit, seen from far away, of light from an
 // emitter on a circular Keplerian orbit: sqrt(1 - 1.5 rs / r) / (1 - Omega
@@ -43,9 +44,9 @@ vec3 disk_color(float r, float g_full) {
     // The gravitational part as this observer measures it: emitter's clock
     // against the camera's.
     float lapse2 = max(1.0 - rs * ir, 1e-6), inv_lapse = inversesqrt(lapse2);
-    float g_grav = lapse2 * inv_lapse * (1.0 / P.observer.lapse);
+    float g_grav = lapse2 * inv_lapse * (1.0 / observer_lapse);
     bool doppler = P.disk.doppler > 0.5, redshift = P.disk.redshift > 0.5, beaming = P.disk.beaming > 0.5;
-    float g_kin = g_full * inv_lapse * P.observer.lapse;
+    float g_kin = g_full * inv_lapse * observer_lapse;
     float g_base = redshift ? g_grav : 1.0;
     float g = doppler ? g_base * g_kin : g_base;          // colour
     float g_i = beaming ? g_base * g_kin : g_base;        // brightness

@@ -42,9 +42,10 @@ struct CameraParams {
     uvec2 size;     uvec2 pad;           // image width, height
 };
 
+// The observer's motion; its frame at a ray's origin comes from the metric
+// (metric_static_frame, metric.glsl).
 struct ObserverParams {
     vec3 velocity;  float kind;          // velocity in the static frame (world axes); OBS_*
-    vec3 radial;    float lapse;         // unit vector from the reference hole; sqrt(1 - rs/r) (1: flat)
 };
 
 struct MetricParams {

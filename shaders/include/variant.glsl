@@ -6,34 +6,30 @@
 // Specialization constants (src/passes/raymarch/mod.rs, `Variant`): code a
 // scene does not use is compiled out of its pipeline. On a CPU driver such as
 // lavapipe every branch runs under a mask for every pixel, taken or not, so
-// this is what keeps the cost to the code a scene uses.
-// One hole with gravity on: the closed-form path; otherwise the general
-// Cartesian integrator.
-layout(constant_id = 0) const bool ONE_HOLE = false;
+// this is what keeps the cost to the code a scene uses. (The metric is
+// chosen at build time instead, metric.glsl: one SPIR-V module each.)
 // The disk kind (DISK_NONE, DISK_THIN, DISK_VOLUME).
-layout(constant_id = 1) const int DISK_KIND = 1;
+layout(constant_id = 0) const int DISK_KIND = 1;
 // The sky kind (SKY_BLACK, SKY_CHECKER, SKY_STARS, SKY_IMAGE, SKY_CATALOGUE).
-layout(constant_id = 2) const int SKY_KIND = 2;
+layout(constant_id = 1) const int SKY_KIND = 2;
 // The grid plane is drawn.
-layout(constant_id = 3) const bool GRID_PLANE = false;
+layout(constant_id = 2) const bool GRID_PLANE = false;
 // The thin disk is seen as it was when its light left it (one hole).
-layout(constant_id = 4) const bool LIGHT_DELAY = false;
+layout(constant_id = 3) const bool LIGHT_DELAY = false;
 // The thin disk has filaments and clumps (its `structure` key above 0).
-layout(constant_id = 5) const bool THIN_STRUCTURE = false;
+layout(constant_id = 4) const bool THIN_STRUCTURE = false;
 // Thin-disk crossings a ray may see (2 when the disk lets light through).
-layout(constant_id = 6) const int THIN_CROSSINGS = 1;
+layout(constant_id = 5) const int THIN_CROSSINGS = 1;
 // The volumetric disk glows as a blackbody at its shifted temperature (else
 // the film's colour map).
-layout(constant_id = 7) const bool VOLUME_BLACKBODY = false;
-// Gravity off: rays are straight lines, traced in closed form.
-layout(constant_id = 8) const bool STRAIGHT = false;
+layout(constant_id = 6) const bool VOLUME_BLACKBODY = false;
 // Which part of the split thin-disk ray march this pipeline runs.
 #define DISK_STAGE_ALL 0    // everything in one dispatch
 #define DISK_STAGE_TRACE 1  // sky and captures, every pixel; lists disk pixels
 #define DISK_STAGE_DISK 2   // the thin disk over the listed pixels
-layout(constant_id = 9) const int DISK_STAGE = DISK_STAGE_ALL;
+layout(constant_id = 7) const int DISK_STAGE = DISK_STAGE_ALL;
 // The observer moves through the static frame (orbiting, falling): the
 // pixel directions are aberrated.
-layout(constant_id = 10) const bool OBSERVER_MOVES = false;
+layout(constant_id = 8) const bool OBSERVER_MOVES = false;
 
 #endif

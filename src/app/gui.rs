@@ -530,7 +530,6 @@ impl Overlay for Gui {
         if self.primitives.is_empty() {
             return;
         }
-        let out = target.clone();
         let extent = vk::Extent2D {
             width: target.desc.width,
             height: target.desc.height,
@@ -538,30 +537,29 @@ impl Overlay for Gui {
         let ppp = self.pixels_per_point;
         let renderer = &mut self.renderer;
         let primitives = &self.primitives;
-        graph
-            .add_pass("gui")
-            .write(target, Access::ColorAttachmentWrite, Mips::ALL)
-            .record(move |ctx| {
-                let attachment = [vk::RenderingAttachmentInfo::default()
-                    .image_view(ctx.view(&out, 0))
-                    .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
-                    .load_op(vk::AttachmentLoadOp::LOAD)
-                    .store_op(vk::AttachmentStoreOp::STORE)];
-                let info = vk::RenderingInfo::default()
-                    .render_area(vk::Rect2D {
-                        offset: vk::Offset2D::default(),
-                        extent,
-                    })
-                    .layer_count(1)
-                    .color_attachments(&attachment);
-                // SAFETY: the graph put the image in COLOR_ATTACHMENT_OPTIMAL;
-                // dynamic rendering is enabled on windowed devices.
-                unsafe { ctx.gpu.device.cmd_begin_rendering(ctx.cmd, &info) };
-                let drawn = renderer.cmd_draw(ctx.cmd, extent, ppp, primitives);
-                // SAFETY: paired with the begin above.
-                unsafe { ctx.gpu.device.cmd_end_rendering(ctx.cmd) };
-                drawn.map_err(|e| Error::Other(format!("drawing the GUI: {e}")))
-            });
+        let mut pass = graph.add_pass("gui");
+        let out = pass.write(target, Access::ColorAttachmentWrite, Mips::ALL);
+        pass.record(move |ctx| {
+            let attachment = [vk::RenderingAttachmentInfo::default()
+                .image_view(ctx.view(&out, 0))
+                .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+                .load_op(vk::AttachmentLoadOp::LOAD)
+                .store_op(vk::AttachmentStoreOp::STORE)];
+            let info = vk::RenderingInfo::default()
+                .render_area(vk::Rect2D {
+                    offset: vk::Offset2D::default(),
+                    extent,
+                })
+                .layer_count(1)
+                .color_attachments(&attachment);
+            // SAFETY: the graph put the image in COLOR_ATTACHMENT_OPTIMAL;
+            // dynamic rendering is enabled on windowed devices.
+            unsafe { ctx.gpu.device.cmd_begin_rendering(ctx.cmd, &info) };
+            let drawn = renderer.cmd_draw(ctx.cmd, extent, ppp, primitives);
+            // SAFETY: paired with the begin above.
+            unsafe { ctx.gpu.device.cmd_end_rendering(ctx.cmd) };
+            drawn.map_err(|e| Error::Other(format!("drawing the GUI: {e}")))
+        });
     }
 }
 

@@ -7,7 +7,7 @@ use std::sync::Arc;
 use ash::vk;
 
 use super::{
-    BufferHandle, BufferOrigin, Compiled, Graph, ImageDesc, ImageHandle, ImageOrigin, PassBarriers,
+    BufferOrigin, BufferRef, Compiled, Graph, ImageDesc, ImageOrigin, ImageRef, PassBarriers,
 };
 use crate::vk::{Buffer, Gpu, Image, TimestampPool};
 use crate::{Error, Result};
@@ -114,29 +114,43 @@ struct Resolved {
 pub struct PassContext<'r> {
     pub gpu: &'r Gpu,
     pub cmd: vk::CommandBuffer,
+    /// The pass being recorded (its references are checked against it).
+    pass: usize,
     images: &'r [Resolved],
     buffers: &'r [vk::Buffer],
 }
 
 impl PassContext<'_> {
-    /// The view of one mip level of an image.
-    pub fn view(&self, h: &ImageHandle, mip: u32) -> vk::ImageView {
-        self.images[h.id].mip_views[mip as usize]
+    fn resolve(&self, r: &ImageRef) -> &Resolved {
+        debug_assert_eq!(
+            r.pass, self.pass,
+            "an image reference used outside its pass"
+        );
+        &self.images[r.id]
+    }
+
+    /// The view of one mip level of an image the pass declared.
+    pub fn view(&self, r: &ImageRef, mip: u32) -> vk::ImageView {
+        self.resolve(r).mip_views[mip as usize]
     }
 
     /// A view of all mip levels.
-    pub fn full_view(&self, h: &ImageHandle) -> vk::ImageView {
-        self.images[h.id].full_view
+    pub fn full_view(&self, r: &ImageRef) -> vk::ImageView {
+        self.resolve(r).full_view
     }
 
     /// The image itself (for copies).
-    pub fn image(&self, h: &ImageHandle) -> vk::Image {
-        self.images[h.id].image
+    pub fn image(&self, r: &ImageRef) -> vk::Image {
+        self.resolve(r).image
     }
 
-    /// A buffer.
-    pub fn buffer(&self, h: &BufferHandle) -> vk::Buffer {
-        self.buffers[h.id]
+    /// A buffer the pass declared.
+    pub fn buffer(&self, r: &BufferRef) -> vk::Buffer {
+        debug_assert_eq!(
+            r.pass, self.pass,
+            "a buffer reference used outside its pass"
+        );
+        self.buffers[r.id]
     }
 }
 
@@ -240,6 +254,7 @@ pub fn execute(
             let mut ctx = PassContext {
                 gpu,
                 cmd,
+                pass: p,
                 images: &resolved,
                 buffers: &buffer_handles,
             };
@@ -263,6 +278,20 @@ pub fn execute(
     Ok(names)
 }
 
+/// The dependency every barrier of the graph carries, from a compiled
+/// barrier's four masks (the queue family never changes).
+macro_rules! dependency {
+    ($barrier:expr, $b:expr) => {
+        $barrier
+            .src_stage_mask($b.src_stage)
+            .src_access_mask($b.src_access)
+            .dst_stage_mask($b.dst_stage)
+            .dst_access_mask($b.dst_access)
+            .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+    };
+}
+
 fn record_barriers(
     gpu: &Gpu,
     cmd: vk::CommandBuffer,
@@ -277,15 +306,9 @@ fn record_barriers(
         .images
         .iter()
         .map(|ib| {
-            vk::ImageMemoryBarrier2::default()
-                .src_stage_mask(ib.src_stage)
-                .src_access_mask(ib.src_access)
-                .dst_stage_mask(ib.dst_stage)
-                .dst_access_mask(ib.dst_access)
+            dependency!(vk::ImageMemoryBarrier2::default(), ib)
                 .old_layout(ib.old_layout)
                 .new_layout(ib.new_layout)
-                .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-                .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
                 .image(images[ib.image].image)
                 .subresource_range(vk::ImageSubresourceRange {
                     aspect_mask: vk::ImageAspectFlags::COLOR,
@@ -300,13 +323,7 @@ fn record_barriers(
         .buffers
         .iter()
         .map(|bb| {
-            vk::BufferMemoryBarrier2::default()
-                .src_stage_mask(bb.src_stage)
-                .src_access_mask(bb.src_access)
-                .dst_stage_mask(bb.dst_stage)
-                .dst_access_mask(bb.dst_access)
-                .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-                .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+            dependency!(vk::BufferMemoryBarrier2::default(), bb)
                 .buffer(buffers[bb.buffer])
                 .offset(0)
                 .size(vk::WHOLE_SIZE)

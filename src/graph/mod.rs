@@ -8,11 +8,11 @@
 //! timestamp: [`compile`] and [`execute`] do that from the declarations.
 //!
 //! ```text
-//! let mut g = Graph::new();
+//! let mut g = Graph::new(w, h);
 //! let mut hdr = g.create_image("hdr", ImageDesc::new_2d(format, w, h));
-//! g.add_pass("raymarch")
-//!     .write(&mut hdr, Access::ComputeStorageWrite, Mips::ALL)
-//!     .record(move |ctx| { /* bind, dispatch */ });
+//! let mut pass = g.add_pass("raymarch");
+//! let out = pass.write(&mut hdr, Access::ComputeStorageWrite, Mips::ALL);
+//! pass.record(move |ctx| { /* bind ctx.view(&out, 0), dispatch */ });
 //! let compiled = g.compile()?;
 //! ```
 
@@ -22,7 +22,9 @@ pub mod resource;
 
 pub use compile::{BufferBarrier, Compiled, ImageBarrier, PassBarriers, compile};
 pub use execute::{PassContext, TransientPool};
-pub use resource::{BufferBinding, BufferHandle, ImageBinding, ImageDesc, ImageHandle, Mips};
+pub use resource::{
+    BufferBinding, BufferHandle, BufferRef, ImageBinding, ImageDesc, ImageHandle, ImageRef, Mips,
+};
 
 use crate::vk::Access;
 
@@ -259,59 +261,72 @@ impl<'a> Graph<'a> {
     }
 }
 
-/// Declares one pass's uses. Dropping it without `record` leaves a pass that
-/// records nothing (still scheduled, still synchronized).
+/// Declares one pass's uses; each declaration returns the reference the
+/// pass's recording reads the resource through, so a resource the pass did
+/// not declare cannot be bound. Dropping the builder without `record` leaves
+/// a pass that records nothing (still scheduled, still synchronized).
 pub struct PassBuilder<'g, 'a> {
     graph: &'g mut Graph<'a>,
 }
 
 impl<'a> PassBuilder<'_, 'a> {
-    fn pass(&mut self) -> &mut PassNode<'a> {
+    fn index(&self) -> usize {
         // add_pass pushed the node this builder describes.
-        let last = self.graph.passes.len() - 1;
+        self.graph.passes.len() - 1
+    }
+
+    fn pass(&mut self) -> &mut PassNode<'a> {
+        let last = self.index();
         &mut self.graph.passes[last]
     }
 
-    /// Declares a read of `mips` of `image`.
-    pub fn read(mut self, image: &ImageHandle, access: Access, mips: Mips) -> Self {
-        debug_assert!(!access.info().writes, "{access:?} is a write; use write()");
+    fn use_image(&mut self, image: &ImageHandle, access: Access, mips: Mips) -> ImageRef {
         self.pass().images.push(ImageUse {
             image: image.id,
             access,
             mips,
         });
-        self
+        ImageRef {
+            id: image.id,
+            pass: self.index(),
+            desc: image.desc,
+        }
+    }
+
+    fn use_buffer(&mut self, buffer: &BufferHandle, access: Access) -> BufferRef {
+        self.pass().buffers.push(BufferUse {
+            buffer: buffer.id,
+            access,
+        });
+        BufferRef {
+            id: buffer.id,
+            pass: self.index(),
+            size: buffer.size,
+        }
+    }
+
+    /// Declares a read of `mips` of `image`.
+    pub fn read(&mut self, image: &ImageHandle, access: Access, mips: Mips) -> ImageRef {
+        debug_assert!(!access.info().writes, "{access:?} is a write; use write()");
+        self.use_image(image, access, mips)
     }
 
     /// Declares a write (or read-write) of `mips` of `image`.
-    pub fn write(mut self, image: &mut ImageHandle, access: Access, mips: Mips) -> Self {
+    pub fn write(&mut self, image: &mut ImageHandle, access: Access, mips: Mips) -> ImageRef {
         debug_assert!(access.info().writes, "{access:?} is a read; use read()");
-        self.pass().images.push(ImageUse {
-            image: image.id,
-            access,
-            mips,
-        });
-        self
+        self.use_image(image, access, mips)
     }
 
     /// Declares a read of `buffer`.
-    pub fn read_buffer(mut self, buffer: &BufferHandle, access: Access) -> Self {
+    pub fn read_buffer(&mut self, buffer: &BufferHandle, access: Access) -> BufferRef {
         debug_assert!(!access.info().writes, "{access:?} is a write");
-        self.pass().buffers.push(BufferUse {
-            buffer: buffer.id,
-            access,
-        });
-        self
+        self.use_buffer(buffer, access)
     }
 
     /// Declares a write of `buffer`.
-    pub fn write_buffer(mut self, buffer: &mut BufferHandle, access: Access) -> Self {
+    pub fn write_buffer(&mut self, buffer: &mut BufferHandle, access: Access) -> BufferRef {
         debug_assert!(access.info().writes, "{access:?} is a read");
-        self.pass().buffers.push(BufferUse {
-            buffer: buffer.id,
-            access,
-        });
-        self
+        self.use_buffer(buffer, access)
     }
 
     /// Sets what the pass records; called once the graph's barriers are in place.

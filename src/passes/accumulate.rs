@@ -61,22 +61,20 @@ pub fn add_accumulate<'a>(
         height,
         weight: 1.0 / (index as f32 + 1.0),
     };
-    let (src, dst) = (sample.clone(), mean.clone());
-    graph
-        .add_pass("accumulate")
-        .read(sample, Access::ComputeStorageRead, Mips::ALL)
-        .write(mean, access, Mips::ALL)
-        .record(move |ctx| {
-            dispatch_2d(
-                ctx,
-                &pipeline.0,
-                &[
-                    Descriptor::StorageImage(ctx.view(&src, 0)),
-                    Descriptor::StorageImage(ctx.view(&dst, 0)),
-                ],
-                bytemuck::bytes_of(&push),
-                width,
-                height,
-            )
-        });
+    let mut pass = graph.add_pass("accumulate");
+    let src = pass.read(sample, Access::ComputeStorageRead, Mips::ALL);
+    let dst = pass.write(mean, access, Mips::ALL);
+    pass.record(move |ctx| {
+        dispatch_2d(
+            ctx,
+            &pipeline.0,
+            &[
+                Descriptor::StorageImage(ctx.view(&src, 0)),
+                Descriptor::StorageImage(ctx.view(&dst, 0)),
+            ],
+            bytemuck::bytes_of(&push),
+            width,
+            height,
+        )
+    });
 }

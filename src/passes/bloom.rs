@@ -125,91 +125,83 @@ pub fn add_bloom<'a>(
 
     // Bright pass + first downsample: full-resolution HDR -> level 0.
     {
-        let (src, dst) = (hdr.clone(), chain.clone());
         let (w, h) = chain.desc.mip_extent(0);
         let texel = [1.0 / hdr.desc.width as f32, 1.0 / hdr.desc.height as f32];
-        graph
-            .add_pass("bloom prefilter")
-            .read(hdr, Access::ComputeSampledRead, Mips::ALL)
-            .write(&mut chain, Access::ComputeStorageWrite, Mips::one(0))
-            .record(move |ctx| {
-                let push = BloomPrefilterPush {
-                    src_texel: texel,
-                    dst_size: [w, h],
-                    threshold,
-                    knee,
-                };
-                dispatch_2d(
-                    ctx,
-                    &pipelines.prefilter,
-                    &[
-                        Descriptor::SampledImage(ctx.full_view(&src), sampler),
-                        Descriptor::StorageImage(ctx.view(&dst, 0)),
-                    ],
-                    bytemuck::bytes_of(&push),
-                    w,
-                    h,
-                )
-            });
+        let mut pass = graph.add_pass("bloom prefilter");
+        let src = pass.read(hdr, Access::ComputeSampledRead, Mips::ALL);
+        let dst = pass.write(&mut chain, Access::ComputeStorageWrite, Mips::one(0));
+        pass.record(move |ctx| {
+            let push = BloomPrefilterPush {
+                src_texel: texel,
+                dst_size: [w, h],
+                threshold,
+                knee,
+            };
+            dispatch_2d(
+                ctx,
+                &pipelines.prefilter,
+                &[
+                    Descriptor::SampledImage(ctx.full_view(&src), sampler),
+                    Descriptor::StorageImage(ctx.view(&dst, 0)),
+                ],
+                bytemuck::bytes_of(&push),
+                w,
+                h,
+            )
+        });
     }
 
     // Downsample chain: level n -> level n + 1.
     for n in 0..levels - 1 {
-        let (src, dst) = (chain.clone(), chain.clone());
         let (sw, sh) = chain.desc.mip_extent(n);
         let (w, h) = chain.desc.mip_extent(n + 1);
-        let read = chain.clone();
-        graph
-            .add_pass(&format!("bloom down {}", n + 1))
-            .read(&read, Access::ComputeSampledRead, Mips::one(n))
-            .write(&mut chain, Access::ComputeStorageWrite, Mips::one(n + 1))
-            .record(move |ctx| {
-                let push = BloomDownPush {
-                    src_texel: [1.0 / sw as f32, 1.0 / sh as f32],
-                    dst_size: [w, h],
-                };
-                dispatch_2d(
-                    ctx,
-                    &pipelines.down,
-                    &[
-                        Descriptor::SampledImage(ctx.view(&src, n), sampler),
-                        Descriptor::StorageImage(ctx.view(&dst, n + 1)),
-                    ],
-                    bytemuck::bytes_of(&push),
-                    w,
-                    h,
-                )
-            });
+        let mut pass = graph.add_pass(&format!("bloom down {}", n + 1));
+        let src = pass.read(&chain, Access::ComputeSampledRead, Mips::one(n));
+        let dst = pass.write(&mut chain, Access::ComputeStorageWrite, Mips::one(n + 1));
+        pass.record(move |ctx| {
+            let push = BloomDownPush {
+                src_texel: [1.0 / sw as f32, 1.0 / sh as f32],
+                dst_size: [w, h],
+            };
+            dispatch_2d(
+                ctx,
+                &pipelines.down,
+                &[
+                    Descriptor::SampledImage(ctx.view(&src, n), sampler),
+                    Descriptor::StorageImage(ctx.view(&dst, n + 1)),
+                ],
+                bytemuck::bytes_of(&push),
+                w,
+                h,
+            )
+        });
     }
 
     // Upsample chain: level n + 1 tent-filtered and added into level n.
     for n in (0..levels - 1).rev() {
-        let (src, dst) = (chain.clone(), chain.clone());
         let (sw, sh) = chain.desc.mip_extent(n + 1);
         let (w, h) = chain.desc.mip_extent(n);
-        let read = chain.clone();
-        graph
-            .add_pass(&format!("bloom up {n}"))
-            .read(&read, Access::ComputeSampledRead, Mips::one(n + 1))
-            .write(&mut chain, Access::ComputeStorageReadWrite, Mips::one(n))
-            .record(move |ctx| {
-                let push = BloomUpPush {
-                    src_texel: [1.0 / sw as f32, 1.0 / sh as f32],
-                    dst_size: [w, h],
-                    radius,
-                };
-                dispatch_2d(
-                    ctx,
-                    &pipelines.up,
-                    &[
-                        Descriptor::SampledImage(ctx.view(&src, n + 1), sampler),
-                        Descriptor::StorageImage(ctx.view(&dst, n)),
-                    ],
-                    bytemuck::bytes_of(&push),
-                    w,
-                    h,
-                )
-            });
+        let mut pass = graph.add_pass(&format!("bloom up {n}"));
+        let src = pass.read(&chain, Access::ComputeSampledRead, Mips::one(n + 1));
+        let dst = pass.write(&mut chain, Access::ComputeStorageReadWrite, Mips::one(n));
+        pass.record(move |ctx| {
+            let push = BloomUpPush {
+                src_texel: [1.0 / sw as f32, 1.0 / sh as f32],
+                dst_size: [w, h],
+                radius,
+            };
+            dispatch_2d(
+                ctx,
+                &pipelines.up,
+                &[
+                    Descriptor::SampledImage(ctx.view(&src, n + 1), sampler),
+                    Descriptor::StorageImage(ctx.view(&dst, n)),
+                ],
+                bytemuck::bytes_of(&push),
+                w,
+                h,
+            )
+        });
     }
     Some(chain)
 }

@@ -187,8 +187,6 @@ pub fn add_composite<'a>(
         (width, height)
     };
     let mut ldr = graph.create_image(name, ImageDesc::new_2d(format, width, height));
-    let (input, output, blur, metered) =
-        (hdr.clone(), ldr.clone(), bloom.cloned(), exposure.cloned());
     // The up chain sums every level into level 0: divide by their count so
     // `strength` means the same for any number of levels.
     let bloom_strength = match bloom {
@@ -203,42 +201,37 @@ pub fn add_composite<'a>(
         dither: if post.dither { 1.0 } else { 0.0 },
         saturation: post.saturation as f32,
     };
-    let mut pass = graph
-        .add_pass("composite")
-        .read(hdr, Access::ComputeSampledRead, Mips::ALL);
-    if let Some(b) = bloom {
-        pass = pass.read(b, Access::ComputeSampledRead, Mips::one(0));
-    }
-    if let Some(e) = exposure {
-        pass = pass.read_buffer(e, Access::ComputeStorageRead);
-    }
-    pass.write(&mut ldr, Access::ComputeStorageWrite, Mips::ALL)
-        .record(move |ctx| {
-            let sampler = pipelines.sampler.sampler;
-            // Without bloom the binding still needs an image; the shader skips it.
-            let bloom_view = match &blur {
-                Some(b) => ctx.view(b, 0),
-                None => ctx.full_view(&input),
-            };
-            // Without automatic exposure the shader never reads it.
-            let metered_buffer = match &metered {
-                Some(e) => ctx.buffer(e),
-                None => pipelines.placeholder.buffer,
-            };
-            let pipeline = pipelines.pipeline(variant)?;
-            dispatch_2d(
-                ctx,
-                &pipeline,
-                &[
-                    Descriptor::SampledImage(ctx.full_view(&input), sampler),
-                    Descriptor::StorageImage(ctx.view(&output, 0)),
-                    Descriptor::SampledImage(bloom_view, sampler),
-                    Descriptor::StorageBuffer(metered_buffer),
-                ],
-                bytemuck::bytes_of(&push),
-                groups_w,
-                groups_h,
-            )
-        });
+    let mut pass = graph.add_pass("composite");
+    let input = pass.read(hdr, Access::ComputeSampledRead, Mips::ALL);
+    let blur = bloom.map(|b| pass.read(b, Access::ComputeSampledRead, Mips::one(0)));
+    let metered = exposure.map(|e| pass.read_buffer(e, Access::ComputeStorageRead));
+    let output = pass.write(&mut ldr, Access::ComputeStorageWrite, Mips::ALL);
+    pass.record(move |ctx| {
+        let sampler = pipelines.sampler.sampler;
+        // Without bloom the binding still needs an image; the shader skips it.
+        let bloom_view = match &blur {
+            Some(b) => ctx.view(b, 0),
+            None => ctx.full_view(&input),
+        };
+        // Without automatic exposure the shader never reads it.
+        let metered_buffer = match &metered {
+            Some(e) => ctx.buffer(e),
+            None => pipelines.placeholder.buffer,
+        };
+        let pipeline = pipelines.pipeline(variant)?;
+        dispatch_2d(
+            ctx,
+            &pipeline,
+            &[
+                Descriptor::SampledImage(ctx.full_view(&input), sampler),
+                Descriptor::StorageImage(ctx.view(&output, 0)),
+                Descriptor::SampledImage(bloom_view, sampler),
+                Descriptor::StorageBuffer(metered_buffer),
+            ],
+            bytemuck::bytes_of(&push),
+            groups_w,
+            groups_h,
+        )
+    });
     ldr
 }

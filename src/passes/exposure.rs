@@ -62,30 +62,28 @@ pub fn add_exposure<'a>(
         return None;
     }
     let mut exposure = graph.create_buffer("exposure", 16);
-    let (input, output) = (hdr.clone(), exposure.clone());
     let push = ExposurePush {
         size: [hdr.desc.width, hdr.desc.height],
         low: post.meter_low as f32,
         high: post.meter_high as f32,
         key: KEY,
     };
-    graph
-        .add_pass("exposure")
-        .read(hdr, Access::ComputeSampledRead, Mips::ALL)
-        .write_buffer(&mut exposure, Access::ComputeStorageWrite)
-        .record(move |ctx| {
-            // One workgroup (256 invocations) meters the whole image.
-            dispatch_2d(
-                ctx,
-                &pipeline.pipeline,
-                &[
-                    Descriptor::SampledImage(ctx.full_view(&input), pipeline.sampler.sampler),
-                    Descriptor::StorageBuffer(ctx.buffer(&output)),
-                ],
-                bytemuck::bytes_of(&push),
-                1,
-                1,
-            )
-        });
+    let mut pass = graph.add_pass("exposure");
+    let input = pass.read(hdr, Access::ComputeSampledRead, Mips::ALL);
+    let output = pass.write_buffer(&mut exposure, Access::ComputeStorageWrite);
+    pass.record(move |ctx| {
+        // One workgroup (256 invocations) meters the whole image.
+        dispatch_2d(
+            ctx,
+            &pipeline.pipeline,
+            &[
+                Descriptor::SampledImage(ctx.full_view(&input), pipeline.sampler.sampler),
+                Descriptor::StorageBuffer(ctx.buffer(&output)),
+            ],
+            bytemuck::bytes_of(&push),
+            1,
+            1,
+        )
+    });
     Some(exposure)
 }

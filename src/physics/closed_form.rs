@@ -138,6 +138,31 @@ pub struct LightPath {
 }
 
 impl LightPath {
+    /// A path from its roots `[u1, d21, d32, u3]`, its modulus, where it
+    /// starts on its elliptic argument `(w0, dw/dphi, sweep to the end)`.
+    fn from_parts(
+        kind: Kind,
+        [u1, d21, d32, u3]: [f64; 4],
+        m_complement: f64,
+        k_complete: f64,
+        (w0, rate, phi_end): (f64, f64, f64),
+        escapes: bool,
+    ) -> LightPath {
+        LightPath {
+            kind,
+            u1,
+            d21,
+            d32,
+            u3,
+            m_complement,
+            k_complete,
+            w0,
+            rate,
+            phi_end: phi_end.max(0.0),
+            escapes,
+        }
+    }
+
     /// The path of a ray starting at u0 = rs/r with du/dφ = `du` (in units of
     /// rs; `du` > 0 moving inward). `c` = (rs/b)² = du² + u0² - u0³.
     pub fn new(u0: f64, du: f64) -> LightPath {
@@ -200,19 +225,14 @@ impl LightPath {
                 };
                 (Kind::Trapped, w0, rate, phi_end, false)
             };
-            LightPath {
+            LightPath::from_parts(
                 kind,
-                u1,
-                d21,
-                d32,
-                u3,
+                [u1, d21, d32, u3],
                 m_complement,
                 k_complete,
-                w0,
-                rate,
-                phi_end: phi_end.max(0.0),
+                (w0, rate, phi_end),
                 escapes,
-            }
+            )
         } else {
             // One real root: u1 = 1/3 - 2/3 cosh(α/3), α = acosh(27c/2 - 1)
             // = 2 asinh(√(-27e/4)). The complex pair m ± in has
@@ -241,19 +261,14 @@ impl LightPath {
             } else {
                 ((w0 - w_of(0.0)) / rate, -rate, true)
             };
-            LightPath {
-                kind: Kind::Plunging,
-                u1,
-                d21: a,
-                d32: 0.0,
-                u3: 0.0,
+            LightPath::from_parts(
+                Kind::Plunging,
+                [u1, a, 0.0, 0.0],
                 m_complement,
                 k_complete,
-                w0,
-                rate,
-                phi_end: phi_end.max(0.0),
+                (w0, rate, phi_end),
                 escapes,
-            }
+            )
         }
     }
 

@@ -93,58 +93,77 @@ struct State {
     a: DVec3,
 }
 
+/// The Dormand-Prince 5(4) tableau: each stage's coefficients on the
+/// earlier stages' derivatives, the fifth-order weights, and the error
+/// weights (fifth minus fourth order; the last on the step's end, which the
+/// next step reuses).
+pub(crate) const DP_A: [&[f64]; 6] = [
+    &[],
+    &[1.0 / 5.0],
+    &[3.0 / 40.0, 9.0 / 40.0],
+    &[44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0],
+    &[
+        19372.0 / 6561.0,
+        -25360.0 / 2187.0,
+        64448.0 / 6561.0,
+        -212.0 / 729.0,
+    ],
+    &[
+        9017.0 / 3168.0,
+        -355.0 / 33.0,
+        46732.0 / 5247.0,
+        49.0 / 176.0,
+        -5103.0 / 18656.0,
+    ],
+];
+pub(crate) const DP_B: [f64; 6] = [
+    35.0 / 384.0,
+    0.0,
+    500.0 / 1113.0,
+    125.0 / 192.0,
+    -2187.0 / 6784.0,
+    11.0 / 84.0,
+];
+pub(crate) const DP_E: [f64; 7] = [
+    71.0 / 57600.0,
+    0.0,
+    -71.0 / 16695.0,
+    71.0 / 1920.0,
+    -17253.0 / 339200.0,
+    22.0 / 525.0,
+    -1.0 / 40.0,
+];
+
+/// sum of c[i] k[i], left to right, leaving out the zero weights.
+fn weighted(c: &[f64], k: &[DVec3]) -> DVec3 {
+    c.iter()
+        .zip(k)
+        .filter(|(c, _)| **c != 0.0)
+        .map(|(c, k)| *c * *k)
+        .reduce(|a, b| a + b)
+        .unwrap_or(DVec3::ZERO)
+}
+
 /// One Dormand-Prince step; returns the new state and the error estimate
 /// (position error, velocity error).
 fn dopri(holes: &[Hole], s: State, h: f64) -> (State, f64, f64) {
-    const A21: f64 = 1.0 / 5.0;
-    const A31: f64 = 3.0 / 40.0;
-    const A32: f64 = 9.0 / 40.0;
-    const A41: f64 = 44.0 / 45.0;
-    const A42: f64 = -56.0 / 15.0;
-    const A43: f64 = 32.0 / 9.0;
-    const A51: f64 = 19372.0 / 6561.0;
-    const A52: f64 = -25360.0 / 2187.0;
-    const A53: f64 = 64448.0 / 6561.0;
-    const A54: f64 = -212.0 / 729.0;
-    const A61: f64 = 9017.0 / 3168.0;
-    const A62: f64 = -355.0 / 33.0;
-    const A63: f64 = 46732.0 / 5247.0;
-    const A64: f64 = 49.0 / 176.0;
-    const A65: f64 = -5103.0 / 18656.0;
-    const B1: f64 = 35.0 / 384.0;
-    const B3: f64 = 500.0 / 1113.0;
-    const B4: f64 = 125.0 / 192.0;
-    const B5: f64 = -2187.0 / 6784.0;
-    const B6: f64 = 11.0 / 84.0;
-    const E1: f64 = 71.0 / 57600.0;
-    const E3: f64 = -71.0 / 16695.0;
-    const E4: f64 = 71.0 / 1920.0;
-    const E5: f64 = -17253.0 / 339200.0;
-    const E6: f64 = 22.0 / 525.0;
-    const E7: f64 = -1.0 / 40.0;
-
-    let (x, v, a1) = (s.x, s.v, s.a);
-    let v1 = v;
-    let x2 = x + h * (A21 * v1);
-    let v2 = v + h * (A21 * a1);
-    let a2 = accel(holes, x2, v2);
-    let x3 = x + h * (A31 * v1 + A32 * v2);
-    let v3 = v + h * (A31 * a1 + A32 * a2);
-    let a3 = accel(holes, x3, v3);
-    let x4 = x + h * (A41 * v1 + A42 * v2 + A43 * v3);
-    let v4 = v + h * (A41 * a1 + A42 * a2 + A43 * a3);
-    let a4 = accel(holes, x4, v4);
-    let x5 = x + h * (A51 * v1 + A52 * v2 + A53 * v3 + A54 * v4);
-    let v5 = v + h * (A51 * a1 + A52 * a2 + A53 * a3 + A54 * a4);
-    let a5 = accel(holes, x5, v5);
-    let x6 = x + h * (A61 * v1 + A62 * v2 + A63 * v3 + A64 * v4 + A65 * v5);
-    let v6 = v + h * (A61 * a1 + A62 * a2 + A63 * a3 + A64 * a4 + A65 * a5);
-    let a6 = accel(holes, x6, v6);
-    let xn = x + h * (B1 * v1 + B3 * v3 + B4 * v4 + B5 * v5 + B6 * v6);
-    let vn = v + h * (B1 * a1 + B3 * a3 + B4 * a4 + B5 * a5 + B6 * a6);
+    // Stage derivatives: of x (the velocities), of v (the accelerations).
+    let (mut kv, mut ka) = (Vec::with_capacity(7), Vec::with_capacity(7));
+    kv.push(s.v);
+    ka.push(s.a);
+    for coeffs in &DP_A[1..] {
+        let x = s.x + h * weighted(coeffs, &kv);
+        let v = s.v + h * weighted(coeffs, &ka);
+        kv.push(v);
+        ka.push(accel(holes, x, v));
+    }
+    let xn = s.x + h * weighted(&DP_B, &kv);
+    let vn = s.v + h * weighted(&DP_B, &ka);
     let an = accel(holes, xn, vn);
-    let ex = h * (E1 * v1 + E3 * v3 + E4 * v4 + E5 * v5 + E6 * v6 + E7 * vn);
-    let ev = h * (E1 * a1 + E3 * a3 + E4 * a4 + E5 * a5 + E6 * a6 + E7 * an);
+    kv.push(vn);
+    ka.push(an);
+    let ex = h * weighted(&DP_E, &kv);
+    let ev = h * weighted(&DP_E, &ka);
     (
         State {
             x: xn,

@@ -6,6 +6,7 @@ pub mod blackbody;
 pub mod closed_form;
 pub mod disk;
 pub mod geodesic;
+pub mod kerr;
 pub mod observer;
 pub mod redshift;
 

@@ -284,7 +284,7 @@ fn add_scene_frame<'a>(
     params: BufferBinding,
     size: (u32, u32),
     output: OutputKind,
-    accumulation: Option<Accumulation<'_>>,
+    accumulation: Option<Accumulation>,
 ) -> ImageHandle {
     let params = g.import_buffer("raymarch params", params, Access::HostWrite, None);
     let images = import_scene_images(g, resources);
@@ -306,8 +306,7 @@ fn add_scene_frame<'a>(
     )
 }
 
-/// Imports the colour table, the noise textures and the sky (the table again
-/// when the sky is not an image: the binding must hold something).
+/// Imports the colour table, the noise textures and the sky image if any.
 fn import_scene_images(g: &mut Graph<'_>, res: &SceneResources) -> raymarch::SceneImages {
     let mut import = |name: &str, image: &crate::vk::Image| {
         g.import_image(
@@ -321,10 +320,7 @@ fn import_scene_images(g: &mut Graph<'_>, res: &SceneResources) -> raymarch::Sce
     let disk_lut = import("disk lut", &res.disk_lut);
     let disk_noise = import("disk noise", &res.disk_noise);
     let volume_noise = import("volume noise", &res.volume_noise);
-    let sky = match &res.sky {
-        Some((_, image)) => import("sky", image),
-        None => disk_lut.clone(),
-    };
+    let sky = res.sky.as_ref().map(|(_, image)| import("sky", image));
     raymarch::SceneImages {
         disk_lut,
         disk_noise,

@@ -249,7 +249,7 @@ impl Renderer {
                 add_frame(
                     g,
                     pipelines,
-                    HdrSource::Image(&input),
+                    HdrSource::Image(input),
                     PostSettings { bloom, post },
                     OutputKind::Ldr,
                     None,
@@ -280,7 +280,7 @@ impl Sample<'_> {
         params: BufferBinding,
         output: OutputKind,
     ) -> ImageHandle {
-        let mut mean = import_mean(g, self.mean);
+        let mean = import_mean(g, self.mean);
         add_scene_frame(
             g,
             pipelines,
@@ -290,7 +290,7 @@ impl Sample<'_> {
             self.size,
             output,
             Some(Accumulation {
-                mean: &mut mean,
+                mean,
                 index: self.index,
             }),
         )

@@ -22,13 +22,13 @@ pub enum HdrSource<'h> {
         size: (u32, u32),
     },
     /// An image already in the graph (the post-processing API's upload).
-    Image(&'h ImageHandle),
+    Image(ImageHandle),
 }
 
 /// The progressive accumulation of a still view (window only).
-pub struct Accumulation<'h> {
-    /// The running mean, kept across frames by the caller.
-    pub mean: &'h mut ImageHandle,
+pub struct Accumulation {
+    /// The running mean, kept across frames by the caller and imported.
+    pub mean: ImageHandle,
     /// Which sample of the unchanged view this frame is (0 restarts).
     pub index: u32,
 }
@@ -48,7 +48,7 @@ pub fn add_frame<'a>(
     source: HdrSource<'_>,
     settings: PostSettings<'_>,
     output: OutputKind,
-    accumulation: Option<Accumulation<'_>>,
+    accumulation: Option<Accumulation>,
 ) -> ImageHandle {
     let hdr = match source {
         HdrSource::RayMarch {
@@ -72,15 +72,21 @@ pub fn add_frame<'a>(
                 split: pipelines.features().splits(scene, size.0, size.1),
             },
         ),
-        HdrSource::Image(image) => image.clone(),
+        HdrSource::Image(image) => image,
     };
     if output == OutputKind::Geodesic {
         return hdr;
     }
     let hdr = match accumulation {
-        Some(Accumulation { mean, index }) => {
-            passes::accumulate::add_accumulate(graph, &pipelines.accumulate, &hdr, mean, index);
-            mean.clone()
+        Some(Accumulation { mut mean, index }) => {
+            passes::accumulate::add_accumulate(
+                graph,
+                &pipelines.accumulate,
+                &hdr,
+                &mut mean,
+                index,
+            );
+            mean
         }
         None => hdr,
     };

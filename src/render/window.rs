@@ -81,13 +81,13 @@ impl Renderer {
 
         let (out_w, out_h) = (target.desc.width, target.desc.height);
         let mut g = Graph::new(out_w, out_h);
-        let mut mean_handle = match (sample, self.mean.as_ref()) {
+        let mean_handle = match (sample, self.mean.as_ref()) {
             (Some(_), Some((img, state))) => {
                 Some(import_mean(&mut g, (img.desc, img.binding(), *state)))
             }
             _ => None,
         };
-        let accumulation = match (mean_handle.as_mut(), sample) {
+        let accumulation = match (mean_handle, sample) {
             (Some(mean), Some(index)) => Some(Accumulation { mean, index }),
             _ => None,
         };

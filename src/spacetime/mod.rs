@@ -32,15 +32,16 @@ pub enum Spacetime {
     Summed(Vec<Hole>),
 }
 
-/// Which light path the ray march is specialised on (its `ONE_HOLE` and
-/// `STRAIGHT` constants; one file of `shaders/include/metric/` each).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Which metric the ray march is built with (one file of
+/// `shaders/include/metric/` each, chosen by a define in build.rs; each
+/// defines `metric_trace`; [`crate::shaders::raymarch`] picks the module).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum GpuPath {
-    /// `metric/flat.glsl`, `trace_straight`.
+    /// `metric/flat.glsl` (`METRIC_FLAT`): straight lines.
     Straight,
-    /// `metric/schwarzschild.glsl`, `trace_planar`.
+    /// `metric/schwarzschild.glsl` (`METRIC_SCHWARZSCHILD`): the closed form.
     ClosedForm,
-    /// `metric/summed.glsl`, `trace`.
+    /// `metric/summed.glsl` (`METRIC_SUMMED`): integrated step by step.
     Integrated,
 }
 

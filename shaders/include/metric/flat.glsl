@@ -1,9 +1,11 @@
 // Gravity off: straight rays, traced in closed form (the holes still
-// absorb). trace_straight() is this metric's path.
+// absorb). metric_trace() is this metric's path; the caller shades the disk
+// it stops at.
 #ifndef METRIC_FLAT_GLSL
 #define METRIC_FLAT_GLSL
 
 #include "params.glsl"
+#include "metric/static_frame.glsl"
 #include "variant.glsl"
 #include "hit.glsl"
 #include "disk.glsl"
@@ -14,7 +16,13 @@
 // annulus, or at the sky in its own direction; the volumetric disk is
 // gathered along the part of the line inside the slab, in chords of at most
 // 16 samples (the step-by-step path's spacing), up to the horizon.
-Hit trace_straight(vec3 x, vec3 d) {
+StaticFrame metric_static_frame(vec3 origin) {
+    return static_frame_at(origin, false);
+}
+
+const bool METRIC_SHADES_DISK = false;
+
+Hit metric_trace(vec3 x, vec3 d) {
     Hit hit = hit_start(OUT_ESCAPED, x, d);
     float t_h = 1e30;
     for (uint k = 0u; k < P.metric.hole_count; ++k) {

@@ -1,11 +1,13 @@
 // One hole with gravity: the closed-form light path (lightpath.glsl), its
 // thin-disk crossings on the line of nodes, the volumetric slabs along it and
-// the light's travel time. trace_planar() is this metric's path.
+// the light's travel time. metric_trace() is this metric's path, and it adds
+// the thin disk's light as it crosses it.
 #ifndef METRIC_SCHWARZSCHILD_GLSL
 #define METRIC_SCHWARZSCHILD_GLSL
 
 #include "constants.glsl"
 #include "params.glsl"
+#include "metric/static_frame.glsl"
 #include "variant.glsl"
 #include "ray_state.glsl"
 #include "lightpath.glsl"
@@ -137,7 +139,13 @@ bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 no
 // crossings are where the orbit plane meets the disk plane (phi_0 + k pi),
 // u there straight from the formula; escape and capture come from the total
 // sweep; no steps.
-Hit trace_planar(vec3 x, vec3 d) {
+StaticFrame metric_static_frame(vec3 origin) {
+    return static_frame_at(origin, true);
+}
+
+const bool METRIC_SHADES_DISK = true;
+
+Hit metric_trace(vec3 x, vec3 d) {
     Hit hit = hit_start(OUT_NO_STEPS, vec3(0.0), d);
     vec3 c = P.metric.holes[0].xyz;
     float rs = P.metric.holes[0].w;

@@ -1,11 +1,12 @@
 // Several holes: their pulls summed (an approximation) and integrated
 // step by step (geodesic.glsl), with the disk plane's crossings located on
-// each step and the bending left beyond the escape radius. trace() is this
-// metric's path.
+// each step and the bending left beyond the escape radius. metric_trace() is
+// this metric's path; the caller shades the disk it stops at.
 #ifndef METRIC_SUMMED_GLSL
 #define METRIC_SUMMED_GLSL
 
 #include "params.glsl"
+#include "metric/static_frame.glsl"
 #include "variant.glsl"
 #include "geodesic.glsl"
 #include "hit.glsl"
@@ -55,7 +56,13 @@ vec3 plane_crossing(vec3 x0, vec3 v0, vec3 x1, vec3 v1, float h) {
     return p;
 }
 
-Hit trace(vec3 x, vec3 v) {
+StaticFrame metric_static_frame(vec3 origin) {
+    return static_frame_at(origin, true);
+}
+
+const bool METRIC_SHADES_DISK = false;
+
+Hit metric_trace(vec3 x, vec3 v) {
     Hit hit = hit_start(OUT_NO_STEPS, vec3(0.0), v);
     bool vol = volumetric();
     float tol = P.integrator.tolerance;

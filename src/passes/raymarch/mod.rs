@@ -33,7 +33,7 @@ use crate::Result;
 use crate::graph::{BufferHandle, Graph, ImageDesc, ImageHandle, Mips};
 use crate::render::Features;
 use crate::scene::{DiskKind, Scene, VolumeColor};
-use crate::shaders::{RAYMARCH, RAYMARCH_AOV, RAYMARCH_NO_QUAD, RAYMARCH_SPLIT};
+use crate::shaders::{self, RaymarchBuild};
 use crate::spacetime::{GpuPath, Spacetime};
 use crate::vk::{Access, BindingKind, Buffer, ComputePipeline, Descriptor, Gpu, Sampler};
 
@@ -82,9 +82,8 @@ pub struct SceneImages {
     /// The volumetric disk's noise volume (`render::noise::volume_noise`;
     /// a 1x1x1 placeholder for other disks).
     pub volume_noise: ImageHandle,
-    /// The image sky; the colour table again when the sky is not an image
-    /// (the binding must hold something; the shader never samples it).
-    pub sky: ImageHandle,
+    /// The image sky, when the sky is an image.
+    pub sky: Option<ImageHandle>,
 }
 
 /// What the ray march reads: the host-written parameter block and the images.
@@ -143,45 +142,43 @@ pub fn split_pays(scene: &Scene, width: u32, height: u32) -> bool {
     f64::from(on_disk) < SPLIT_MAX_DISK_SHARE * f64::from(cols * rows)
 }
 
-/// A specialisation of raymarch.comp: its constants, and the AOV build.
+/// A build of raymarch.comp (its metric, and the AOV build) and its
+/// specialisation constants.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Variant {
     /// The geodesic AOV build (`GEODESIC_AOV`).
     pub aov: bool,
-    /// One hole with gravity: the closed-form path (constant 0).
-    pub one_hole: bool,
-    /// The disk kind, `glsl::DISK_*` (constant 1).
+    /// The metric compiled in (`shaders/include/metric.glsl`).
+    pub path: GpuPath,
+    /// The disk kind, `glsl::DISK_*` (constant 0).
     pub disk: u32,
-    /// The sky kind, `glsl::SKY_*` (constant 2).
+    /// The sky kind, `glsl::SKY_*` (constant 1).
     pub sky: u32,
-    /// The grid plane is on (constant 3).
+    /// The grid plane is on (constant 2).
     pub plane: bool,
-    /// The disk is seen as it was when its light left (constant 4).
+    /// The disk is seen as it was when its light left (constant 3).
     pub light_delay: bool,
-    /// The thin disk's filaments and clumps (constant 5).
+    /// The thin disk's filaments and clumps (constant 4).
     pub structure: bool,
     /// Thin-disk crossings a ray may see: 2 where light comes through it
-    /// (constant 6).
+    /// (constant 5).
     pub thin_crossings: u32,
     /// The volumetric disk glows as a blackbody (else the colour map)
-    /// (constant 7).
+    /// (constant 6).
     pub volume_blackbody: bool,
-    /// Gravity off: straight rays, traced in closed form (constant 8).
-    pub straight: bool,
     /// The part of the split thin-disk ray march, `glsl::DISK_STAGE_*`
-    /// (constant 9).
+    /// (constant 7).
     pub disk_stage: u32,
-    /// The observer moves through the static frame: aberration (constant 10).
+    /// The observer moves through the static frame: aberration (constant 8).
     pub observer_moves: bool,
 }
 
 impl Variant {
     /// The variant a scene needs.
     pub fn of(scene: &Scene, aov: bool) -> Variant {
-        let path = Spacetime::of(scene).gpu_path();
         Variant {
             aov,
-            one_hole: path == GpuPath::ClosedForm,
+            path: Spacetime::of(scene).gpu_path(),
             disk: disk_kind(scene),
             sky: sky_kind(scene),
             plane: scene.plane.enabled,
@@ -193,7 +190,6 @@ impl Variant {
                 1
             },
             volume_blackbody: scene.disk.color == VolumeColor::Blackbody,
-            straight: path == GpuPath::Straight,
             disk_stage: glsl::DISK_STAGE_ALL,
             observer_moves: scene.observer().beta != glam::DVec3::ZERO,
         }
@@ -203,7 +199,7 @@ impl Variant {
     /// disk passes for one hole with a thin disk when `split` (the device
     /// has subgroup ballots), else itself.
     pub fn stages(self, split: bool) -> Vec<Variant> {
-        if split && self.one_hole && !self.aov && self.disk == glsl::DISK_THIN {
+        if split && self.path == GpuPath::ClosedForm && !self.aov && self.disk == glsl::DISK_THIN {
             [glsl::DISK_STAGE_TRACE, glsl::DISK_STAGE_DISK]
                 .map(|disk_stage| Variant { disk_stage, ..self })
                 .to_vec()
@@ -214,8 +210,7 @@ impl Variant {
 
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against include/variant.glsl).
-    pub const CONSTANT_NAMES: [&'static str; 11] = [
-        "ONE_HOLE",
+    pub const CONSTANT_NAMES: [&'static str; 9] = [
         "DISK_KIND",
         "SKY_KIND",
         "GRID_PLANE",
@@ -223,14 +218,12 @@ impl Variant {
         "THIN_STRUCTURE",
         "THIN_CROSSINGS",
         "VOLUME_BLACKBODY",
-        "STRAIGHT",
         "DISK_STAGE",
         "OBSERVER_MOVES",
     ];
 
-    pub fn constants(&self) -> [u32; 11] {
+    pub fn constants(&self) -> [u32; 9] {
         [
-            u32::from(self.one_hole),
             self.disk,
             self.sky,
             u32::from(self.plane),
@@ -238,7 +231,6 @@ impl Variant {
             u32::from(self.structure),
             self.thin_crossings,
             u32::from(self.volume_blackbody),
-            u32::from(self.straight),
             self.disk_stage,
             u32::from(self.observer_moves),
         ]
@@ -246,9 +238,9 @@ impl Variant {
 
     pub fn name(&self) -> String {
         format!(
-            "raymarch{} (one hole {}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, straight {}, disk stage {}, observer moves {})",
+            "raymarch{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {})",
             if self.aov { " aov" } else { "" },
-            self.one_hole,
+            self.path,
             self.disk,
             self.sky,
             self.plane,
@@ -256,7 +248,6 @@ impl Variant {
             self.structure,
             self.thin_crossings,
             self.volume_blackbody,
-            self.straight,
             self.disk_stage,
             self.observer_moves
         )
@@ -314,15 +305,20 @@ impl RaymarchPipelines {
     /// pixel, so a branch not taken costs as much as one taken.
     pub fn pipeline(&self, variant: Variant) -> Result<Arc<ComputePipeline>> {
         self.cache.get(variant, || {
-            let spirv = if variant.aov {
-                RAYMARCH_AOV
+            let build = if variant.aov {
+                RaymarchBuild::Aov
             } else if variant.disk_stage != glsl::DISK_STAGE_ALL {
-                RAYMARCH_SPLIT
+                RaymarchBuild::Split
             } else if self.features.ray_differentials {
-                RAYMARCH
+                RaymarchBuild::Beauty
             } else {
-                RAYMARCH_NO_QUAD
+                RaymarchBuild::NoQuad
             };
+            let spirv = shaders::raymarch(variant.path, build).ok_or_else(|| {
+                crate::Error::Other(format!(
+                    "no {build:?} build of the ray march for {variant:?}"
+                ))
+            })?;
             ComputePipeline::with_constants(
                 &self.gpu,
                 &variant.name(),
@@ -382,26 +378,24 @@ pub fn add_raymarch<'a>(
         list: graph.create_buffer("disk list", 4 + 4 * pixels),
         dispatch: graph.create_buffer("disk dispatch", 16),
     };
-    let (l, d) = (work.list.clone(), work.dispatch.clone());
-    graph
-        .add_pass("disk list clear")
-        .write_buffer(&mut work.list, Access::TransferWrite)
-        .write_buffer(&mut work.dispatch, Access::TransferWrite)
-        .record(move |ctx| {
-            let (list, dispatch) = (ctx.buffer(&l), ctx.buffer(&d));
-            // SAFETY: recording; both ranges lie inside the buffers.
-            unsafe {
-                ctx.gpu.device.cmd_fill_buffer(ctx.cmd, list, 0, 4, 0);
-                ctx.gpu.device.cmd_update_buffer(
-                    ctx.cmd,
-                    dispatch,
-                    0,
-                    // groups_y grows from 0 with groups_x (rows of DISK_ROW).
-                    bytemuck::bytes_of(&[0u32, 0, 1, 0]),
-                );
-            }
-            Ok(())
-        });
+    let mut pass = graph.add_pass("disk list clear");
+    let list = pass.write_buffer(&mut work.list, Access::TransferWrite);
+    let dispatch = pass.write_buffer(&mut work.dispatch, Access::TransferWrite);
+    pass.record(move |ctx| {
+        let (list, dispatch) = (ctx.buffer(&list), ctx.buffer(&dispatch));
+        // SAFETY: recording; both ranges lie inside the buffers.
+        unsafe {
+            ctx.gpu.device.cmd_fill_buffer(ctx.cmd, list, 0, 4, 0);
+            ctx.gpu.device.cmd_update_buffer(
+                ctx.cmd,
+                dispatch,
+                0,
+                // groups_y grows from 0 with groups_x (rows of DISK_ROW).
+                bytemuck::bytes_of(&[0u32, 0, 1, 0]),
+            );
+        }
+        Ok(())
+    });
     stage(graph, &mut hdr, trace, Stage::Trace(&mut work));
     stage(graph, &mut hdr, disk, Stage::Disk(&work));
     hdr
@@ -434,56 +428,47 @@ fn add_stage<'a>(
     variant: Variant,
     stage: Stage<'_>,
 ) {
-    let SceneImages {
-        disk_lut,
-        disk_noise,
-        volume_noise,
-        sky,
-    } = images;
     let (width, height) = (hdr.desc.width, hdr.desc.height);
-    let (out, lut, sky_tex, ubo) = (hdr.clone(), disk_lut.clone(), sky.clone(), params.clone());
-    let (noise, volume) = (disk_noise.clone(), volume_noise.clone());
     let indirect = matches!(stage, Stage::Disk(_));
-    let mut pass = graph
-        .add_pass(if indirect {
-            "raymarch disk"
-        } else {
-            "raymarch"
-        })
-        .read_buffer(params, Access::ComputeStorageRead)
-        .read(disk_lut, Access::ComputeSampledRead, Mips::ALL)
-        .read(disk_noise, Access::ComputeSampledRead, Mips::ALL)
-        .read(volume_noise, Access::ComputeSampledRead, Mips::ALL);
-    if sky != disk_lut {
-        pass = pass.read(sky, Access::ComputeSampledRead, Mips::ALL);
-    }
-    let (buffers, hdr_access) = match stage {
-        Stage::Whole => (None, Access::ComputeStorageWrite),
-        Stage::Trace(w) => {
-            pass = pass
-                .write_buffer(&mut w.list, Access::ComputeStorageReadWrite)
-                .write_buffer(&mut w.dispatch, Access::ComputeStorageReadWrite);
-            (
-                Some((w.list.clone(), w.dispatch.clone())),
-                Access::ComputeStorageWrite,
-            )
-        }
-        Stage::Disk(w) => {
-            pass = pass
-                .read_buffer(&w.list, Access::ComputeStorageRead)
-                .read_buffer(&w.dispatch, Access::IndirectRead);
-            (
-                Some((w.list.clone(), w.dispatch.clone())),
-                Access::ComputeStorageReadWrite,
-            )
-        }
+    let mut pass = graph.add_pass(if indirect {
+        "raymarch disk"
+    } else {
+        "raymarch"
+    });
+    let sampled = Access::ComputeSampledRead;
+    let block = pass.read_buffer(params, Access::ComputeStorageRead);
+    let lut = pass.read(&images.disk_lut, sampled, Mips::ALL);
+    let noise = pass.read(&images.disk_noise, sampled, Mips::ALL);
+    let volume = pass.read(&images.volume_noise, sampled, Mips::ALL);
+    // Without an image sky the binding holds the colour table (never sampled).
+    let sky = match &images.sky {
+        Some(sky) => pass.read(sky, sampled, Mips::ALL),
+        None => lut,
     };
-    pass.write(hdr, hdr_access, Mips::ALL).record(move |ctx| {
+    let (work, hdr_access) = match stage {
+        Stage::Whole => (None, Access::ComputeStorageWrite),
+        Stage::Trace(w) => (
+            Some((
+                pass.write_buffer(&mut w.list, Access::ComputeStorageReadWrite),
+                pass.write_buffer(&mut w.dispatch, Access::ComputeStorageReadWrite),
+            )),
+            Access::ComputeStorageWrite,
+        ),
+        Stage::Disk(w) => (
+            Some((
+                pass.read_buffer(&w.list, Access::ComputeStorageRead),
+                pass.read_buffer(&w.dispatch, Access::IndirectRead),
+            )),
+            Access::ComputeStorageReadWrite,
+        ),
+    };
+    let out = pass.write(hdr, hdr_access, Mips::ALL);
+    pass.record(move |ctx| {
         // Built on first use (Renderer::prepare_scene builds it ahead).
         let pipeline = pipelines.pipeline(variant)?;
         let repeat = pipelines.repeat_sampler.sampler;
         // Without the split its buffers are never read.
-        let (list, dispatch) = match &buffers {
+        let (list, dispatch) = match &work {
             Some((l, d)) => (ctx.buffer(l), ctx.buffer(d)),
             None => {
                 let placeholder = pipelines.placeholder.buffer;
@@ -492,9 +477,9 @@ fn add_stage<'a>(
         };
         let descriptors = [
             Descriptor::StorageImage(ctx.view(&out, 0)),
-            Descriptor::StorageBuffer(ctx.buffer(&ubo)),
+            Descriptor::StorageBuffer(ctx.buffer(&block)),
             Descriptor::SampledImage(ctx.full_view(&lut), pipelines.linear_clamp.sampler),
-            Descriptor::SampledImage(ctx.full_view(&sky_tex), pipelines.sky_sampler.sampler),
+            Descriptor::SampledImage(ctx.full_view(&sky), pipelines.sky_sampler.sampler),
             Descriptor::SampledImage(ctx.full_view(&noise), repeat),
             Descriptor::SampledImage(ctx.full_view(&volume), repeat),
             Descriptor::StorageBuffer(list),

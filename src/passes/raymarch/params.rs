@@ -43,10 +43,6 @@ pub struct ObserverParams {
     pub velocity: [f32; 3],
     /// `ObserverKind` as a number (`OBS_*`).
     pub kind: f32,
-    /// Unit vector from the reference hole to the camera.
-    pub radial: [f32; 3],
-    /// sqrt(1 - rs/r) at the camera (1: flat).
-    pub lapse: f32,
 }
 
 /// The holes.
@@ -272,8 +268,6 @@ fn observer(scene: &Scene) -> ObserverParams {
     ObserverParams {
         velocity: v3(obs.beta),
         kind: obs.kind as u32 as f32,
-        radial: v3(obs.rhat),
-        lapse: obs.lapse as f32,
     }
 }
 

@@ -1,0 +1,32 @@
+// The spacetime seam of the ray march: exactly one metric is compiled into
+// each build of raymarch.comp, chosen by a define that build.rs sets (one
+// SPIR-V module per metric, src/shaders.rs `raymarch`). Each file of
+// metric/ defines the same set:
+//
+//   Hit metric_trace(vec3 origin, vec3 dir)  the camera ray's path from an
+//       origin along a unit coordinate direction, to a horizon, the disk or
+//       the sky, with the disk's light gathered on the way (hit.glsl);
+//   const bool METRIC_SHADES_DISK  metric_trace adds the thin disk's light
+//       itself (else the caller shades an opaque disk at hit.pos);
+//   StaticFrame metric_static_frame(vec3 origin)  the frame at rest at any
+//       origin that the observer's velocity is measured in (its radial
+//       direction and lapse; static_frame.glsl), so each ray of a camera
+//       can start from its own place.
+//
+// The disk, the volumetric gas and the sky take what metric_trace returns
+// and know nothing of orbit planes. A spinning hole adds metric/kerr.glsl
+// and METRIC_KERR here.
+#ifndef METRIC_GLSL
+#define METRIC_GLSL
+
+#if defined(METRIC_SCHWARZSCHILD)
+#include "metric/schwarzschild.glsl"
+#elif defined(METRIC_FLAT)
+#include "metric/flat.glsl"
+#elif defined(METRIC_SUMMED)
+#include "metric/summed.glsl"
+#else
+#error "build raymarch.comp with one of METRIC_SCHWARZSCHILD, METRIC_FLAT, METRIC_SUMMED"
+#endif
+
+#endif

@@ -1,0 +1,36 @@
+// The static frame of the nearest hole at a point, shared by the metrics
+// whose holes do not spin: the unit direction away from the hole and the
+// lapse sqrt(1 - rs/r) (the radial squeeze of directions and the clock
+// against infinity). Mirrors Observer::new in src/physics/observer.rs.
+#ifndef STATIC_FRAME_GLSL
+#define STATIC_FRAME_GLSL
+
+#include "params.glsl"
+
+struct StaticFrame {
+    vec3 radial;  // unit, from the reference hole to the point
+    float lapse;  // sqrt(1 - rs/r); 1 without gravity
+};
+
+// The frame at `x` of the hole nearest to it; with `gravity` false only
+// the direction (lapse 1).
+StaticFrame static_frame_at(vec3 x, bool gravity) {
+    uint nearest = 0u;
+    float best = 1e30;
+    for (uint k = 0u; k < P.metric.hole_count; ++k) {
+        float d = length(x - P.metric.holes[k].xyz);
+        if (d < best) {
+            best = d;
+            nearest = k;
+        }
+    }
+    vec4 hole = P.metric.holes[nearest];
+    vec3 rel = x - hole.xyz;
+    float r = length(rel);
+    StaticFrame f;
+    f.radial = rel / r;
+    f.lapse = gravity ? sqrt(max(1.0 - hole.w / r, 0.0)) : 1.0;
+    return f;
+}
+
+#endif
