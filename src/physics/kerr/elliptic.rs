@@ -111,14 +111,14 @@ pub fn sn_cn_dn(u: f64, m: f64) -> (f64, f64, f64) {
         twon *= 2.0;
     }
     let mut phi = twon * a[i] * u;
-    let mut before = phi;
     while i > 0 {
-        before = phi;
         phi = 0.5 * ((c[i] * phi.sin() / a[i]).asin() + phi);
         i -= 1;
     }
     let (s, cn) = phi.sin_cos();
-    (s, cn, cn / (phi - before).cos())
+    // dn > 0 for m < 1; from sn, not cos(phi_0) / cos(phi_1 - phi_0),
+    // which loses its digits where cn passes 0.
+    (s, cn, (1.0 - m * s * s).sqrt())
 }
 
 #[cfg(test)]
