@@ -15,6 +15,7 @@ const METRICS: &[(&str, &str)] = &[
     ("METRIC_SCHWARZSCHILD", "schwarzschild"),
     ("METRIC_FLAT", "flat"),
     ("METRIC_SUMMED", "summed"),
+    ("METRIC_KERR", "kerr"),
 ];
 const RAYMARCH_KINDS: &[(&[&str], &str)] = &[
     (&[], ""),

@@ -134,7 +134,7 @@ void main() {
         aov.xyz = hit.dir;
     } else if (hit.outcome == OUT_DISK) {
         vec3 d = hit.pos - P.metric.holes[0].xyz;
-        aov.x = length(d);
+        aov.x = metric_disk_radius(hit.pos);
         aov.y = atan(dot(d, P.disk.e2), dot(d, P.disk.e1));
         aov.z = hit.g;
     }
@@ -182,7 +182,7 @@ void main() {
         // The disk where the path stopped at it (several holes, gravity
         // off): opaque. (The closed-form path adds the disk's light as it
         // goes.)
-        float r = length(hit.pos - P.metric.holes[0].xyz);
+        float r = metric_disk_radius(hit.pos);
         float dens = THIN_STRUCTURE ? thin_disk_density(r, disk_azimuth(hit.pos), P.disk.rotation_time) : 1.0;
         color = dens * disk_color(r, hit.g);
     }

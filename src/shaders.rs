@@ -40,7 +40,10 @@ pub fn raymarch(path: GpuPath, build: RaymarchBuild) -> Option<&'static [u8]> {
         (Integrated, Beauty) => spv!("raymarch_summed"),
         (Integrated, NoQuad) => spv!("raymarch_summed_no_quad"),
         (Integrated, Aov) => spv!("raymarch_summed_aov"),
-        (Straight | Integrated, Split) => return None,
+        (Kerr, Beauty) => spv!("raymarch_kerr"),
+        (Kerr, NoQuad) => spv!("raymarch_kerr_no_quad"),
+        (Kerr, Aov) => spv!("raymarch_kerr_aov"),
+        (Straight | Integrated | Kerr, Split) => return None,
     })
 }
 

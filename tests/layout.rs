@@ -57,12 +57,17 @@ fn raymarch_struct_matches(name: &str, rust: &[usize]) {
         RaymarchBuild::Aov,
         RaymarchBuild::Split,
     ];
-    let paths = [GpuPath::ClosedForm, GpuPath::Straight, GpuPath::Integrated];
+    let paths = [
+        GpuPath::ClosedForm,
+        GpuPath::Straight,
+        GpuPath::Integrated,
+        GpuPath::Kerr,
+    ];
     let modules: Vec<&[u8]> = paths
         .iter()
         .flat_map(|&p| builds.iter().filter_map(move |&b| raymarch(p, b)))
         .collect();
-    assert_eq!(modules.len(), 10, "every metric's builds, the split once");
+    assert_eq!(modules.len(), 13, "every metric's builds, the split once");
     for spirv in modules {
         let glsl = member_offsets(spirv, name);
         let rust: Vec<u32> = rust.iter().map(|&o| o as u32).collect();
@@ -114,8 +119,8 @@ fn raymarch_params_match_the_glsl_block() {
             offset_of!(MetricParams, holes),
             offset_of!(MetricParams, hole_count),
             offset_of!(MetricParams, gravity),
-            offset_of!(MetricParams, _pad),
-            offset_of!(MetricParams, _pad) + 4,
+            offset_of!(MetricParams, spin_hi),
+            offset_of!(MetricParams, spin_lo),
         ],
     );
     raymarch_struct_matches(

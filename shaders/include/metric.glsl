@@ -11,11 +11,12 @@
 //   StaticFrame metric_static_frame(vec3 origin)  the frame at rest at any
 //       origin that the observer's velocity is measured in (its radial
 //       direction and lapse; static_frame.glsl), so each ray of a camera
-//       can start from its own place.
+//       can start from its own place;
+//   float metric_disk_radius(vec3 p)  the radius (rs) of a disk point at
+//       world point p (a spinning hole's Boyer-Lindquist r).
 //
 // The disk, the volumetric gas and the sky take what metric_trace returns
-// and know nothing of orbit planes. A spinning hole adds metric/kerr.glsl
-// and METRIC_KERR here.
+// and know nothing of orbit planes.
 #ifndef METRIC_GLSL
 #define METRIC_GLSL
 
@@ -25,8 +26,10 @@
 #include "metric/flat.glsl"
 #elif defined(METRIC_SUMMED)
 #include "metric/summed.glsl"
+#elif defined(METRIC_KERR)
+#include "metric/kerr.glsl"
 #else
-#error "build raymarch.comp with one of METRIC_SCHWARZSCHILD, METRIC_FLAT, METRIC_SUMMED"
+#error "build raymarch.comp with one of METRIC_SCHWARZSCHILD, METRIC_FLAT, METRIC_SUMMED, METRIC_KERR"
 #endif
 
 #endif

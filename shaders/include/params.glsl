@@ -26,6 +26,7 @@
 #define OBS_ORBITING 1
 #define OBS_FALLING 2
 #define OBS_FLAT 3
+#define OBS_ZAMO 4
 
 // Temperature range of the blackbody table (log-spaced), kelvin.
 #define LUT_MIN_K 500.0
@@ -52,8 +53,8 @@ struct MetricParams {
     vec4 holes[MAX_HOLES];               // xyz: position, w: rs
     uint hole_count;
     float gravity;                       // 1 on, 0 off (straight rays)
-    float pad0;
-    float pad1;
+    float spin_hi;                       // a spinning hole's a*: hi + lo in f64
+    float spin_lo;
 };
 
 struct IntegratorParams {

@@ -362,6 +362,9 @@ fn camera_and_holes(ui: &mut Ui, s: &mut Scene) {
                 ObserverKind::Flat => {
                     "pixel directions used as coordinate directions (simple renderers)"
                 }
+                ObserverKind::Zamo => {
+                    "turning with the spinning hole's frame dragging, no angular momentum"
+                }
             });
         });
     egui::CollapsingHeader::new("black holes").show(ui, |ui| {

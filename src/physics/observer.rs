@@ -36,11 +36,15 @@ pub enum ObserverKind {
     Orbiting = 1,
     Falling = 2,
     Flat = 3,
+    /// The zero-angular-momentum observer of a spinning hole (at spin 0 the
+    /// static one).
+    Zamo = 4,
 }
 
 impl ObserverKind {
-    pub const ALL: [ObserverKind; 4] = [
+    pub const ALL: [ObserverKind; 5] = [
         ObserverKind::Static,
+        ObserverKind::Zamo,
         ObserverKind::Orbiting,
         ObserverKind::Falling,
         ObserverKind::Flat,
@@ -52,6 +56,7 @@ impl ObserverKind {
             ObserverKind::Orbiting => "orbiting",
             ObserverKind::Falling => "falling",
             ObserverKind::Flat => "flat",
+            ObserverKind::Zamo => "zamo",
         }
     }
 }
@@ -115,7 +120,7 @@ impl Observer {
             1.0
         };
         let beta = match kind {
-            ObserverKind::Static | ObserverKind::Flat => DVec3::ZERO,
+            ObserverKind::Static | ObserverKind::Flat | ObserverKind::Zamo => DVec3::ZERO,
             ObserverKind::Falling => -fall_speed(r, hole.rs).min(0.999_999) * rhat,
             ObserverKind::Orbiting => {
                 let along = disk_normal.normalize().cross(rhat);

@@ -24,6 +24,9 @@ pub struct Features {
     /// every pixel (a GPU already skips the disk's code in the SIMD groups
     /// that miss it). Whether one frame is split: [`Features::splits`].
     pub disk_split: bool,
+    /// The spinning hole's light paths can run (in 64-bit floats, which
+    /// the device has).
+    pub spin: bool,
 }
 
 impl Features {
@@ -36,6 +39,7 @@ impl Features {
                 && info.ballot_compute
                 && info.kind == vk::PhysicalDeviceType::CPU
                 && options.disk_split,
+            spin: info.float64,
         }
     }
 

@@ -57,6 +57,9 @@ pub struct BlackHole {
     pub rs: f64,
     /// Mass in solar masses, for display only (r_s = 2.953 km per solar mass).
     pub mass_solar: Option<f64>,
+    /// Spin a* = a / M, signed (|a*| <= 0.9999): positive turns the same
+    /// way as the disk, about the disk's normal.
+    pub spin: f64,
 }
 
 impl Default for BlackHole {
@@ -65,6 +68,7 @@ impl Default for BlackHole {
             position: [0.0; 3],
             rs: 1.0,
             mass_solar: None,
+            spin: 0.0,
         }
     }
 }

@@ -133,6 +133,19 @@ impl Scene {
             if let Some(m) = h.mass_solar {
                 positive(&key("mass_solar"), m)?;
             }
+            rule(
+                h.spin.in_range() && h.spin.abs() <= MAX_SPIN,
+                &key("spin"),
+                h.spin,
+                format!("must be in [-{MAX_SPIN}, {MAX_SPIN}] (a* = a / M, signed)"),
+            )?;
+            rule(
+                h.spin == 0.0 || n == 1,
+                &key("spin"),
+                h.spin,
+                "a spinning hole must be the only hole: spinning fields do not add up, and no \
+                 closed form exists for several",
+            )?;
         }
         self.check_camera(&self.camera, &[Key("camera")])
     }
@@ -183,7 +196,9 @@ impl Scene {
         for (i, h) in self.black_holes.iter().enumerate() {
             let rel = cam - DVec3::from(h.position);
             let r = rel.length();
-            if r <= h.rs {
+            // A spinning hole's horizon is smaller (checked with its observer).
+            let spins = h.spin != 0.0 && self.physics.gravity;
+            if r <= h.rs && !spins {
                 let why = format!("is inside the horizon of black_hole[{i}]");
                 return fail(&key("position"), vec3(&c.position), why);
             }
@@ -194,6 +209,9 @@ impl Scene {
         let Some((rel, r, rs)) = nearest else {
             return Ok(());
         };
+        if let crate::spacetime::Spacetime::Kerr(k) = crate::spacetime::Spacetime::of(self) {
+            return check_spinning_observer(&k, c, &key("observer"), cam);
+        }
         match c.observer {
             ObserverKind::Orbiting => {
                 if r <= 1.5 * rs {
@@ -229,6 +247,13 @@ impl Scene {
     fn validate_disk(&self) -> Check {
         let d = &self.disk;
         let key = |k| [Key("disk"), Key(k)];
+        let spinning = self.black_holes.first().is_some_and(|h| h.spin != 0.0);
+        rule(
+            d.kind != DiskKind::Volumetric || !spinning || !self.physics.gravity,
+            &key("kind"),
+            "\"volumetric\"",
+            "a volumetric disk around a spinning hole is not drawn yet: use kind = \"thin\" or spin = 0",
+        )?;
         direction(&key("normal"), &d.normal)?;
         non_negative(&key("inner_radius"), d.inner_radius)?;
         rule(
@@ -432,5 +457,57 @@ impl Scene {
             )?;
         }
         Ok(())
+    }
+}
+
+/// The largest |a*| a scene may set.
+pub const MAX_SPIN: f64 = 0.9999;
+
+/// Where the observers of a spinning hole may stand (the ZAMO anywhere
+/// outside the horizon; a static one outside the ergoregion; an orbiting
+/// one slower than light), and "flat" not at all.
+fn check_spinning_observer(
+    k: &crate::spacetime::SpinningHole,
+    c: &Camera,
+    at: &[Seg],
+    position: DVec3,
+) -> Check {
+    use crate::physics::kerr::PlacementError;
+    let name = format!("\"{}\"", c.observer.name());
+    if c.observer == ObserverKind::Flat {
+        return fail(
+            at,
+            name,
+            "needs spin = 0: \"flat\" is the Schwarzschild comparison mapping",
+        );
+    }
+    let half = 0.5 * k.hole.rs;
+    match k.observer_velocity(c.observer, position) {
+        Ok(_) => Ok(()),
+        Err(PlacementError::InsideHorizon) => fail(
+            at,
+            name,
+            format!(
+                "stands inside the spinning hole's horizon (r+ = {:.4} rs)",
+                k.horizon()
+            ),
+        ),
+        Err(PlacementError::StaticInErgoregion(r, r_ergo)) => fail(
+            at,
+            name,
+            format!(
+                "cannot stand inside the ergoregion (r = {:.4} rs, r_ergo = {:.4} rs): use \"zamo\" or \"falling\"",
+                r * half,
+                r_ergo * half
+            ),
+        ),
+        Err(PlacementError::OrbitTooFast(v, r)) => fail(
+            at,
+            name,
+            format!(
+                "would orbit faster than light there (v = {v:.4} c at r = {:.4} rs)",
+                r * half
+            ),
+        ),
     }
 }

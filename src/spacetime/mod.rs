@@ -7,14 +7,16 @@
 //! ([`Spacetime::gpu_path`]). The physics behind each lives in
 //! [`crate::physics`]; the GLSL twins are `shaders/include/metric/*.glsl`.
 //!
-//! The spinning (Kerr) hole joins as a variant here: `spacetime/kerr.rs`
-//! with its closed-form path (Mino time), tetrads and ISCO, each arm of the
-//! methods below, `shaders/include/metric/kerr.glsl` with the same function
-//! set as `schwarzschild.glsl` (a path from an origin and a direction, its
-//! disk-plane crossings, the escape direction, the emitter's g), and a
-//! [`GpuPath`] the ray march is specialised on.
+//! The spinning (Kerr) hole is [`Spacetime::Kerr`]: `spacetime/kerr.rs`
+//! maps the scene's frame to the hole's around the closed form of
+//! [`crate::physics::kerr`]; `shaders/include/metric/kerr.glsl` is its GPU
+//! twin (the same function set as `schwarzschild.glsl`).
+
+pub mod kerr;
 
 use glam::DVec3;
+
+pub use kerr::SpinningHole;
 
 use crate::physics::observer::{Observer, ObserverKind};
 use crate::physics::{Disk, Hole, Outcome, TraceOptions, closed_form, geodesic, redshift};
@@ -30,6 +32,8 @@ pub enum Spacetime {
     /// Several holes: their pulls summed (an approximation, exact for one
     /// hole only) and integrated step by step.
     Summed(Vec<Hole>),
+    /// One spinning hole: exact light paths in closed form (Mino time).
+    Kerr(SpinningHole),
 }
 
 /// Which metric the ray march is built with (one file of
@@ -43,6 +47,8 @@ pub enum GpuPath {
     ClosedForm,
     /// `metric/summed.glsl` (`METRIC_SUMMED`): integrated step by step.
     Integrated,
+    /// `metric/kerr.glsl` (`METRIC_KERR`): the spinning hole's closed form.
+    Kerr,
 }
 
 impl Spacetime {
@@ -51,6 +57,11 @@ impl Spacetime {
         let holes = scene.physics_holes();
         match holes.as_slice() {
             _ if !scene.physics.gravity => Spacetime::Flat(holes),
+            [one] if scene.black_holes[0].spin != 0.0 => Spacetime::Kerr(SpinningHole {
+                hole: *one,
+                spin: scene.black_holes[0].spin,
+                axis: DVec3::from(scene.disk.normal).normalize(),
+            }),
             [one] => Spacetime::Schwarzschild(*one),
             _ => Spacetime::Summed(holes),
         }
@@ -61,6 +72,7 @@ impl Spacetime {
         match self {
             Spacetime::Flat(h) | Spacetime::Summed(h) => h,
             Spacetime::Schwarzschild(h) => std::slice::from_ref(h),
+            Spacetime::Kerr(k) => std::slice::from_ref(&k.hole),
         }
     }
 
@@ -75,22 +87,36 @@ impl Spacetime {
             Spacetime::Flat(_) => GpuPath::Straight,
             Spacetime::Schwarzschild(_) => GpuPath::ClosedForm,
             Spacetime::Summed(_) => GpuPath::Integrated,
+            Spacetime::Kerr(_) => GpuPath::Kerr,
         }
     }
 
-    /// Where a ray from `x0` along `v0` (a coordinate direction) ends: the
+    /// Where a ray from `x0` along `v0` (a coordinate direction; for a
+    /// spinning hole, the direction in the ZAMO's frame at `x0`) ends: the
     /// sky (with its final direction), a horizon, or the thin `disk`.
     pub fn trace(&self, disk: Option<&Disk>, x0: DVec3, v0: DVec3, opt: &TraceOptions) -> Outcome {
         match self {
             Spacetime::Schwarzschild(hole) => closed_form::trace_closed(hole, disk, x0, v0),
             Spacetime::Summed(holes) => geodesic::trace(holes, disk, x0, v0, opt).outcome,
             Spacetime::Flat(holes) => trace_straight(holes, disk, x0, v0),
+            Spacetime::Kerr(k) => k.trace(disk, x0, v0),
         }
     }
 
     /// The observer of `kind` at `position` (any origin): the frame its
     /// pixel directions are measured in. `disk_normal` sets an orbit's sense.
+    /// Around a spinning hole the frame is the ZAMO's, and the observer's
+    /// velocity is relative to it (zero where it cannot stand: validation
+    /// refuses such cameras).
     pub fn observer(&self, kind: ObserverKind, position: DVec3, disk_normal: DVec3) -> Observer {
+        if let Spacetime::Kerr(k) = self {
+            return Observer {
+                kind,
+                rhat: DVec3::Y,
+                lapse: 1.0,
+                beta: k.observer_velocity(kind, position).unwrap_or(DVec3::ZERO),
+            };
+        }
         let gravity = !matches!(self, Spacetime::Flat(_));
         Observer::new(kind, position, self.holes(), disk_normal, gravity)
     }
@@ -100,25 +126,44 @@ impl Spacetime {
     /// for a photon of angular momentum `lambda` about the disk's axis (per
     /// unit energy). With gravity off the emitter still turns: only the
     /// Doppler part remains (the GPU's straight path uses the same formula).
+    /// Around a spinning hole: r^(3/4) sqrt(r^(3/2) - 3 r^(1/2) + 2a) /
+    /// (r^(3/2) + a - lambda) in units of M (the prograde Keplerian emitter).
     pub fn emitter_g(&self, r: f64, lambda: f64) -> f64 {
+        if let Spacetime::Kerr(k) = self {
+            let (m, a) = (0.5 * k.hole.rs, k.spin);
+            let (r, l) = (r / m, lambda / m);
+            let x = r.sqrt();
+            return (x * r).sqrt() * (x * r - 3.0 * x + 2.0 * a).sqrt() / (x * r + a - l);
+        }
         let rs = self.holes().first().map_or(0.0, |h| h.rs);
         redshift::disk_redshift(r, rs, lambda)
     }
 
     /// The horizon's radius around each hole (its `rs`).
     pub fn horizon_radius(&self, hole: &Hole) -> f64 {
-        hole.rs
+        match self {
+            Spacetime::Kerr(k) => k.horizon(),
+            _ => hole.rs,
+        }
     }
 
     /// The photon orbit's radius around `hole`: 1.5 rs (none with gravity off).
     pub fn photon_orbit(&self, hole: &Hole) -> Option<f64> {
-        (!matches!(self, Spacetime::Flat(_))).then_some(1.5 * hole.rs)
+        match self {
+            Spacetime::Flat(_) => None,
+            Spacetime::Kerr(k) => Some(k.photon_orbit()),
+            _ => Some(1.5 * hole.rs),
+        }
     }
 
     /// The innermost stable circular orbit around `hole`: 3 rs (none with
     /// gravity off).
     pub fn isco(&self, hole: &Hole) -> Option<f64> {
-        (!matches!(self, Spacetime::Flat(_))).then_some(3.0 * hole.rs)
+        match self {
+            Spacetime::Flat(_) => None,
+            Spacetime::Kerr(k) => Some(k.isco()),
+            _ => Some(3.0 * hole.rs),
+        }
     }
 }
 

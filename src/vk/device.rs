@@ -34,6 +34,9 @@ pub struct DeviceInfo {
     /// Subgroup ballot operations in compute shaders (the split ray march
     /// lists the disk's pixels with them).
     pub ballot_compute: bool,
+    /// 64-bit floats in shaders (shaderFloat64; enabled when present): the
+    /// spinning hole's light paths need them.
+    pub float64: bool,
 }
 
 /// The logical device and everything created with it once.
@@ -76,6 +79,7 @@ struct Candidate {
     props: vk::PhysicalDeviceProperties,
     quad_compute: bool,
     ballot_compute: bool,
+    float64: bool,
     /// Why it cannot be used, if it cannot.
     unusable: Option<String>,
 }
@@ -171,9 +175,11 @@ impl Gpu {
             .dynamic_rendering(present.is_some());
         let mut sync2 =
             vk::PhysicalDeviceSynchronization2Features::default().synchronization2(true);
+        let core = vk::PhysicalDeviceFeatures::default().shader_float64(chosen.float64);
         let mut create = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queue_info)
-            .enabled_extension_names(&ext_names);
+            .enabled_extension_names(&ext_names)
+            .enabled_features(&core);
         create = if is_13 {
             create.push_next(&mut f13)
         } else {
@@ -227,6 +233,7 @@ impl Gpu {
                 max_push_constants: chosen.props.limits.max_push_constants_size,
                 quad_compute: chosen.quad_compute,
                 ballot_compute: chosen.ballot_compute,
+                float64: chosen.float64,
             },
             push_descriptor,
             debug_utils,
@@ -287,6 +294,8 @@ impl Gpu {
         };
         let quad_compute = compute_ops(vk::SubgroupFeatureFlags::QUAD);
         let ballot_compute = compute_ops(vk::SubgroupFeatureFlags::BALLOT);
+        // SAFETY: as above.
+        let float64 = unsafe { inst.get_physical_device_features(pd) }.shader_float64 == vk::TRUE;
         let unusable = if api < vk::API_VERSION_1_2 {
             Some("Vulkan 1.2 or newer is needed".to_string())
         } else if api < vk::API_VERSION_1_3 && !has(khr::synchronization2::NAME) {
@@ -317,6 +326,7 @@ impl Gpu {
             props,
             quad_compute,
             ballot_compute,
+            float64,
             unusable,
         })
     }

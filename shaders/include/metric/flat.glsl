@@ -20,6 +20,11 @@ StaticFrame metric_static_frame(vec3 origin) {
     return static_frame_at(origin, false);
 }
 
+// The radius (rs) of a disk point: its distance from the first hole.
+float metric_disk_radius(vec3 p) {
+    return length(p - P.metric.holes[0].xyz);
+}
+
 const bool METRIC_SHADES_DISK = false;
 
 Hit metric_trace(vec3 x, vec3 d) {

@@ -304,6 +304,13 @@ impl RaymarchPipelines {
     /// driver such as lavapipe every branch runs under a mask for every
     /// pixel, so a branch not taken costs as much as one taken.
     pub fn pipeline(&self, variant: Variant) -> Result<Arc<ComputePipeline>> {
+        if variant.path == GpuPath::Kerr && !self.features.spin {
+            return Err(crate::Error::Other(format!(
+                "{} has no 64-bit floats in shaders (shaderFloat64), which a spinning hole's light \
+                 paths need: set spin = 0 or use another device",
+                self.gpu.info.name
+            )));
+        }
         self.cache.get(variant, || {
             let build = if variant.aov {
                 RaymarchBuild::Aov

@@ -54,7 +54,10 @@ pub struct MetricParams {
     pub hole_count: u32,
     /// 1 on, 0 off (straight rays).
     pub gravity: f32,
-    pub _pad: [f32; 2],
+    /// The spin a* of a spinning hole as two f32 halves (hi + lo is the
+    /// f64 value: the GPU's Kerr path runs in f64).
+    pub spin_hi: f32,
+    pub spin_lo: f32,
 }
 
 /// `[quality]`: the general integrator (several holes with gravity).
@@ -273,6 +276,11 @@ fn observer(scene: &Scene) -> ObserverParams {
 
 /// The spacetime's part of the block: its holes, and whether rays bend.
 fn metric(spacetime: &Spacetime) -> MetricParams {
+    let spin = match spacetime {
+        Spacetime::Kerr(k) => k.spin,
+        _ => 0.0,
+    };
+    let spin_hi = spin as f32;
     let mut holes = [[0.0f32; 4]; MAX_HOLES];
     for (slot, h) in holes.iter_mut().zip(spacetime.holes()) {
         let p = v3(h.position);
@@ -282,7 +290,8 @@ fn metric(spacetime: &Spacetime) -> MetricParams {
         holes,
         hole_count: spacetime.holes().len().min(MAX_HOLES) as u32,
         gravity: flag(spacetime.gpu_path() != GpuPath::Straight),
-        _pad: [0.0; 2],
+        spin_hi,
+        spin_lo: (spin - f64::from(spin_hi)) as f32,
     }
 }
 
