@@ -1188,3 +1188,21 @@ fn a_static_camera_inside_the_ergoregion_is_refused() {
         );
     }
 }
+
+#[test]
+fn inner_radius_isco_follows_the_spin() {
+    let inner = |toml: &str| {
+        blackhole::scene::Scene::from_toml(toml, "t.toml")
+            .expect("scene")
+            .disk
+            .inner_radius
+    };
+    let isco = "[disk]\ninner_radius = \"isco\"\n";
+    assert_eq!(inner(isco), 3.0);
+    for a in [0.5, 0.998, -0.9] {
+        let r = inner(&format!("[[black_hole]]\nspin = {a}\nrs = 2.0\n{isco}"));
+        assert!((r - r_isco(a)).abs() < 1e-12, "a* {a}: {r}"); // rs = 2: M = 1
+    }
+    assert!(inner(&format!("[[black_hole]]\nspin = 0.998\n{isco}")) < 0.62);
+    assert!(inner(&format!("[[black_hole]]\nspin = -0.998\n{isco}")) > 4.49);
+}

@@ -103,7 +103,7 @@ impl Scene {
 
     /// Parses and validates TOML; `origin` names the file in messages.
     pub fn from_toml(src: &str, origin: &str) -> Result<Self> {
-        let scene: Scene = toml::from_str(src).map_err(|e| {
+        let mut scene: Scene = toml::from_str(src).map_err(|e| {
             let line = e.span().map(|s| locate::line_of(src, s.start));
             let mut msg = locate::compact_numbers(&e.message().trim().replace('\n', " "));
             let text = e.span().and_then(|s| locate::line_text(src, s.start));
@@ -116,6 +116,7 @@ impl Scene {
                 None => Error::Scene(format!("{origin}: {msg}")),
             }
         })?;
+        scene.resolve_isco();
         scene.validate().map_err(|(path, value, why)| {
             let line = locate::line_of_key(src, &path)
                 .map(|l| format!(":{l}"))
@@ -124,6 +125,18 @@ impl Scene {
             Error::Scene(format!("{origin}{line}: {key} = {value}: {why}"))
         })?;
         Ok(scene)
+    }
+
+    /// `[disk] inner_radius = "isco"`: the first hole's ISCO for its spin
+    /// (3 rs without spin or gravity's spin), in rs.
+    fn resolve_isco(&mut self) {
+        if self.disk.inner_radius.to_bits() == super::schema::ISCO_MARK {
+            let (rs, spin) = self
+                .black_holes
+                .first()
+                .map_or((1.0, 0.0), |h| (h.rs, h.spin));
+            self.disk.inner_radius = 0.5 * rs * crate::physics::kerr::r_isco(spin.clamp(-1.0, 1.0));
+        }
     }
 
     /// Checks every value as a scene file's would be (for scenes edited in the

@@ -88,6 +88,10 @@ pub enum DiskKind {
 pub struct Disk {
     pub kind: DiskKind,
     pub normal: [f64; 3],
+    /// A number (rs), or `"isco"`: the innermost stable circular orbit of
+    /// the (first) hole's spin, prograde for a* >= 0 and retrograde below
+    /// (3 rs at spin 0), resolved when the scene is read.
+    #[serde(deserialize_with = "number_or_isco")]
     pub inner_radius: f64,
     pub outer_radius: f64,
     /// Emission scale (luminance of the hottest ring, seen unshifted).
@@ -434,3 +438,26 @@ impl Default for Scene {
 
 /// Most holes one scene may have (the shader's fixed array).
 pub const MAX_HOLES: usize = 8;
+
+/// What `[disk] inner_radius = "isco"` reads as until the scene resolves it
+/// ([`crate::Scene::from_toml`]): a NaN whose payload no TOML number has (a
+/// scene's `nan` is the canonical NaN), so it cannot be written by hand.
+pub const ISCO_MARK: u64 = 0x7ff8_0000_1c0d_0001;
+
+fn number_or_isco<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
+    #[derive(Deserialize)]
+    #[serde(untagged)]
+    enum NumberOrName {
+        Number(f64),
+        Integer(i64),
+        Name(String),
+    }
+    match NumberOrName::deserialize(d)? {
+        NumberOrName::Number(x) => Ok(x),
+        NumberOrName::Integer(i) => Ok(i as f64),
+        NumberOrName::Name(n) if n == "isco" => Ok(f64::from_bits(ISCO_MARK)),
+        NumberOrName::Name(n) => Err(serde::de::Error::custom(format!(
+            "expected a radius or \"isco\", found \"{n}\""
+        ))),
+    }
+}
