@@ -11,20 +11,14 @@
 #include "disk.glsl"
 #include "volume.glsl"
 
+// The frame at a ray's origin and a disk point's radius (static_frame.glsl).
+NON_ROTATING_METRIC(false)
+
 // Gravity off: the ray is the line x + t d. It ends at the first horizon it
 // enters (the holes still absorb), at the thin disk's plane inside the
 // annulus, or at the sky in its own direction; the volumetric disk is
 // gathered along the part of the line inside the slab, in chords of at most
 // 16 samples (the step-by-step path's spacing), up to the horizon.
-StaticFrame metric_static_frame(vec3 origin) {
-    return static_frame_at(origin, false);
-}
-
-// The radius (rs) of a disk point: its distance from the first hole.
-float metric_disk_radius(vec3 p) {
-    return length(p - P.metric.holes[0].xyz);
-}
-
 const bool METRIC_SHADES_DISK = false;
 
 Hit metric_trace(vec3 x, vec3 d) {

@@ -39,32 +39,20 @@ dvec2 kerr_cos_sin(double x) {
     double q = round(x * 0.63661977236758134308lf);
     double r = (x - q * 1.57079632673412561417lf) - q * 6.07710050650619224932e-11lf;
     double r2 = r * r;
-    // sin: r - r^3/3! + ... - r^23/23!
-    double ps = -1.0lf / 25852016738884976640000.0lf;
-    ps = ps * r2 + 1.0lf / 51090942171709440000.0lf;
-    ps = ps * r2 - 1.0lf / 121645100408832000.0lf;
-    ps = ps * r2 + 1.0lf / 355687428096000.0lf;
-    ps = ps * r2 - 1.0lf / 1307674368000.0lf;
-    ps = ps * r2 + 1.0lf / 6227020800.0lf;
-    ps = ps * r2 - 1.0lf / 39916800.0lf;
-    ps = ps * r2 + 1.0lf / 362880.0lf;
-    ps = ps * r2 - 1.0lf / 5040.0lf;
-    ps = ps * r2 + 1.0lf / 120.0lf;
-    ps = ps * r2 - 1.0lf / 6.0lf;
+    // Taylor series, Horner in r^2: sin to r^23, cos to r^22 (1 / n!).
+    const double S[11] = double[11](-1.0lf / 6.0lf, 1.0lf / 120.0lf, -1.0lf / 5040.0lf, 1.0lf / 362880.0lf,
+        -1.0lf / 39916800.0lf, 1.0lf / 6227020800.0lf, -1.0lf / 1307674368000.0lf, 1.0lf / 355687428096000.0lf,
+        -1.0lf / 121645100408832000.0lf, 1.0lf / 51090942171709440000.0lf, -1.0lf / 25852016738884976640000.0lf);
+    const double C[11] = double[11](-0.5lf, 1.0lf / 24.0lf, -1.0lf / 720.0lf, 1.0lf / 40320.0lf,
+        -1.0lf / 3628800.0lf, 1.0lf / 479001600.0lf, -1.0lf / 87178291200.0lf, 1.0lf / 20922789888000.0lf,
+        -1.0lf / 6402373705728000.0lf, 1.0lf / 2432902008176640000.0lf, -1.0lf / 1124000727777607680000.0lf);
+    double ps = 0.0lf, pc = 0.0lf;
+    [[dont_unroll]] for (int i = 10; i >= 0; --i) {
+        ps = ps * r2 + S[i];
+        pc = pc * r2 + C[i];
+    }
     double sn = r + r * r2 * ps;
-    // cos: 1 - r^2/2! + ... + r^22/22!
-    double pc = 1.0lf / 1124000727777607680000.0lf;
-    pc = pc * r2 - 1.0lf / 2432902008176640000.0lf;
-    pc = pc * r2 + 1.0lf / 6402373705728000.0lf;
-    pc = pc * r2 - 1.0lf / 20922789888000.0lf;
-    pc = pc * r2 + 1.0lf / 87178291200.0lf;
-    pc = pc * r2 - 1.0lf / 479001600.0lf;
-    pc = pc * r2 + 1.0lf / 3628800.0lf;
-    pc = pc * r2 - 1.0lf / 40320.0lf;
-    pc = pc * r2 + 1.0lf / 720.0lf;
-    pc = pc * r2 - 1.0lf / 24.0lf;
-    pc = pc * r2 + 0.5lf;
-    double cs = 1.0lf - r2 * pc;
+    double cs = 1.0lf + r2 * pc;
     int k = int(q - 4.0lf * floor(q * 0.25lf));
     if (k == 0) return dvec2(cs, sn);
     if (k == 1) return dvec2(-sn, cs);

@@ -15,6 +15,9 @@
 #include "disk.glsl"
 #include "volume.glsl"
 
+// The frame at a ray's origin and a disk point's radius (static_frame.glsl).
+NON_ROTATING_METRIC(true)
+
 // The volumetric slab around one disk-plane crossing of a closed-form path:
 // the angles where |height| < H, from the crossing's radius and the tilt of
 // the orbit plane (widened for the path's curvature). Four chords between
@@ -139,15 +142,6 @@ bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 no
 // crossings are where the orbit plane meets the disk plane (phi_0 + k pi),
 // u there straight from the formula; escape and capture come from the total
 // sweep; no steps.
-StaticFrame metric_static_frame(vec3 origin) {
-    return static_frame_at(origin, true);
-}
-
-// The radius (rs) of a disk point: its distance from the first hole.
-float metric_disk_radius(vec3 p) {
-    return length(p - P.metric.holes[0].xyz);
-}
-
 const bool METRIC_SHADES_DISK = true;
 
 Hit metric_trace(vec3 x, vec3 d) {

@@ -33,4 +33,14 @@ StaticFrame static_frame_at(vec3 x, bool gravity) {
     return f;
 }
 
+// metric_static_frame and metric_disk_radius (metric.glsl) of a metric
+// whose holes do not spin; `gravity` false: directions only.
+#define NON_ROTATING_METRIC(gravity) \
+    StaticFrame metric_static_frame(vec3 origin) { \
+        return static_frame_at(origin, gravity); \
+    } \
+    float metric_disk_radius(vec3 p) { \
+        return length(p - P.metric.holes[0].xyz); \
+    }
+
 #endif

@@ -13,6 +13,9 @@
 #include "disk.glsl"
 #include "volume.glsl"
 
+// The frame at a ray's origin and a disk point's radius (static_frame.glsl).
+NON_ROTATING_METRIC(true)
+
 // The bending a ray still gets beyond the escape radius, to first order in rs
 // (integrating the perpendicular acceleration 1.5 rs b^3 / r^5 along the
 // straight continuation): delta = rs / (2b) (2 - s (2 s^2 + 3 b^2) / R^3),
@@ -54,15 +57,6 @@ vec3 plane_crossing(vec3 x0, vec3 v0, vec3 x1, vec3 v1, float h) {
         if ((d < 0.0) == (da < 0.0)) { ta = t; da = d; } else { tb = t; db = d; }
     }
     return p;
-}
-
-StaticFrame metric_static_frame(vec3 origin) {
-    return static_frame_at(origin, true);
-}
-
-// The radius (rs) of a disk point: its distance from the first hole.
-float metric_disk_radius(vec3 p) {
-    return length(p - P.metric.holes[0].xyz);
 }
 
 const bool METRIC_SHADES_DISK = false;

@@ -48,15 +48,20 @@ enum Motion {
         x0: f64,
     },
     /// Case 3: two real roots, a complex pair; xi(tau) = xi_o +- g tau.
-    TwoReal {
-        r1: f64,
-        r2: f64,
-        big_a: f64,
-        big_b: f64,
-        xi_o: f64,
-    },
+    TwoReal(TwoReal),
     /// Case 4: no real root outside; Y(tau) = Y_o +- g tau.
     Complex { a2: f64, b1: f64, g0: f64, y_o: f64 },
+}
+
+/// Case 3's roots r1 < r2, A = |r3 - r2|, B = |r3 - r1| and xi at the
+/// camera.
+#[derive(Clone, Copy, Debug)]
+struct TwoReal {
+    r1: f64,
+    r2: f64,
+    big_a: f64,
+    big_b: f64,
+    xi_o: f64,
 }
 
 /// r(tau) of a backward ray from the camera at r_o with initial sign s_r.
@@ -184,13 +189,13 @@ impl Radial {
         } else {
             (xi_inf - xi_o) / self.rate
         };
-        self.motion = Motion::TwoReal {
+        self.motion = Motion::TwoReal(TwoReal {
             r1,
             r2,
             big_a,
             big_b,
             xi_o,
-        };
+        });
         self
     }
 
@@ -252,16 +257,10 @@ impl Radial {
                     (r4 * (r3 - r1) - r3 * (r4 - r1) * s2) / ((r3 - r1) - (r4 - r1) * s2)
                 }
             }
-            Motion::TwoReal {
-                r1,
-                r2,
-                big_a,
-                big_b,
-                xi_o,
-            } => {
-                let (_, cn, _) = sn_cn_dn(xi_o + self.signed(tau), self.m);
-                ((big_b * r2 - big_a * r1) + (big_b * r2 + big_a * r1) * cn)
-                    / ((big_b - big_a) + (big_b + big_a) * cn)
+            Motion::TwoReal(t) => {
+                let (_, cn, _) = sn_cn_dn(t.xi_o + self.signed(tau), self.m);
+                let (a, b) = (t.big_a, t.big_b);
+                ((b * t.r2 - a * t.r1) + (b * t.r2 + a * t.r1) * cn) / ((b - a) + (b + a) * cn)
             }
             Motion::Complex { a2, b1, g0, y_o } => {
                 let (sn, cn, _) = sn_cn_dn(y_o + self.signed(tau), self.m);
@@ -315,13 +314,13 @@ impl Radial {
                 let p = |x: f64| x.signum() * pi_of_xi(n, x.abs(), self.m, self.k);
                 tau / (r1 - rh) - r21 / (self.rate * (r2 - rh) * (r1 - rh)) * (p(x1) - p(x0))
             }
-            Motion::TwoReal {
+            Motion::TwoReal(TwoReal {
                 r1,
                 r2,
                 big_a,
                 big_b,
                 xi_o,
-            } => {
+            }) => {
                 if (rh - r2).abs() < 1e-6 * (r2 - r1) {
                     return self.j_quadrature(rh, tau);
                 }
