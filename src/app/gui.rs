@@ -379,6 +379,13 @@ fn camera_and_holes(ui: &mut Ui, s: &mut Scene) {
             ui.label(format!("black_hole[{i}]"));
             vec3(ui, "position", &mut h.position, 0.05);
             num(ui, "rs", &mut h.rs, 0.01);
+            ui.add(egui::Slider::new(&mut h.spin, -0.9999..=0.9999).text("spin a*"));
+            if h.spin != 0.0 {
+                ui.label(
+                    "spinning (Kerr): light paths exact, in closed form (Mino time, 64-bit); \
+                     one hole only, thin disk, slow on a CPU driver",
+                );
+            }
             if i > 0 && ui.button("remove").clicked() {
                 remove = Some(i);
             }

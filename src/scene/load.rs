@@ -56,6 +56,16 @@ pub const PRESETS: &[(&str, &str, &str)] = &[
         "falling straight in from rest at infinity (observer and animation)",
         include_str!("presets/falling.toml"),
     ),
+    (
+        "gargantua",
+        "a hole spinning at a* = 0.998, its disk to the ISCO, nearly edge-on, shifts off",
+        include_str!("presets/gargantua.toml"),
+    ),
+    (
+        "kerr-doppler",
+        "the same spinning hole from higher up with the shifts on: the asymmetry",
+        include_str!("presets/kerr-doppler.toml"),
+    ),
 ];
 
 /// Names of the built-in presets, for `--help`.
