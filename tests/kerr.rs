@@ -455,7 +455,7 @@ fn the_shadow_proxy_and_the_case_split_agree_on_inward_rays() {
 
 #[test]
 fn page_thorne_flux_vanishes_at_the_isco_and_is_positive_outside() {
-    for a in [-0.9, -0.5, 0.01, 0.5, 0.9, 0.998] {
+    for a in [-0.9, -0.5, 0.0, 0.01, 0.5, 0.9, 0.998] {
         let isco = r_isco(a);
         assert!(
             kerr::page_thorne_f(isco * (1.0 + 1e-12), a).abs() < 1e-8,
@@ -1205,4 +1205,20 @@ fn inner_radius_isco_follows_the_spin() {
     }
     assert!(inner(&format!("[[black_hole]]\nspin = 0.998\n{isco}")) < 0.62);
     assert!(inner(&format!("[[black_hole]]\nspin = -0.998\n{isco}")) > 4.49);
+}
+
+#[test]
+fn page_thorne_temperature_peaks_where_the_specification_says() {
+    // KERR.md 8.4: the peak of T^4 in units of the ISCO.
+    for (a, at) in [(0.0, 1.5918), (0.7, 1.5390), (0.95, 1.4455), (-0.7, 1.6114)] {
+        let (r, _) = kerr::page_thorne_peak(a);
+        let ratio = r / r_isco(a);
+        assert!((ratio - at).abs() < 1e-4, "a* {a}: peak at {ratio} ISCO");
+    }
+    // Spin 0 is the limit of small spins (the root at 0 drops out).
+    let (f0, f1) = (
+        kerr::page_thorne_f(10.0, 0.0),
+        kerr::page_thorne_f(10.0, 1e-7),
+    );
+    assert!((f0 - f1).abs() < 1e-6 * f0, "{f0} vs {f1}");
 }

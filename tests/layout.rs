@@ -151,8 +151,10 @@ fn raymarch_params_match_the_glsl_block() {
             offset_of!(DiskParams, redshift),
             offset_of!(DiskParams, opacity),
             offset_of!(DiskParams, speed),
-            offset_of!(DiskParams, _pad),
-            offset_of!(DiskParams, _pad) + 4,
+            offset_of!(DiskParams, profile),
+            offset_of!(DiskParams, pt_spin),
+            offset_of!(DiskParams, pt_roots),
+            offset_of!(DiskParams, pt_coef),
         ],
     );
     raymarch_struct_matches(

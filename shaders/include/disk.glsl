@@ -34,12 +34,28 @@ layout(binding = 4) uniform sampler2D disk_noise;
 // the emitted T^4. The switches pick which parts of g apply: the gravitational
 // part sqrt(1 - rs/r) (colour and brightness), the kinematic rest to the
 // colour (Doppler) and to the brightness (beaming).
+// Page & Thorne (1974): T^4 ~ f / r with f their relativistic flux for the
+// hole's spin (M = 1, x = sqrt(r / M)), zero inside the spin's ISCO; the
+// constants come from src/physics/kerr (PageThorne), the peak normaliser
+// in nt_peak.
+float page_thorne(float r, float rs) {
+    float x = sqrt(2.0 * r / rs);
+    vec4 q = P.disk.pt_roots, c = P.disk.pt_coef;
+    if (x <= q.x) return 0.0;
+    float a = P.disk.pt_spin;
+    float br = x - q.x - c.w * log(x / q.x) - c.x * log((x - q.y) / (q.x - q.y))
+             - c.y * log((x - q.z) / (q.x - q.z)) - c.z * log((x - q.w) / (q.x - q.w));
+    float f = 1.5 / (x * x * (x * x * x - 3.0 * x + 2.0 * a)) * br;
+    return max(f / (x * x), 0.0);
+}
+
 vec3 disk_color(float r, float g_full) {
     float rs = P.metric.holes[0].w;
     float r_in = P.disk.inner;
     // One reciprocal for the divisions (dear on a CPU driver).
     float ir = 1.0 / r;
-    float f = max((1.0 - sqrt(r_in * ir)) * (ir * ir * ir), 0.0);
+    float f = P.disk.profile > 0.5 ? page_thorne(r, rs)
+            : max((1.0 - sqrt(r_in * ir)) * (ir * ir * ir), 0.0);
     float t_rel = sqrt(sqrt(f * (1.0 / P.disk.nt_peak)));   // T / T_peak
     // The gravitational part as this observer measures it: emitter's clock
     // against the camera's.

@@ -77,8 +77,10 @@ struct DiskParams {
     float redshift;                      // gravitational redshift on (1/0)
     float opacity;                       // thin: opacity at average density
     float speed;                         // x Keplerian
-    float pad0;
-    float pad1;
+    float profile;                       // 0 Newtonian, 1 Page-Thorne (the constants below)
+    float pt_spin;                       // the hole's spin, for Page-Thorne
+    vec4 pt_roots;                       // Page-Thorne: sqrt(ISCO / M), the roots of x^3 - 3x + 2a
+    vec4 pt_coef;                        // Page-Thorne: the roots' log coefficients, 1.5 a
 };
 
 struct VolumeParams {

@@ -94,6 +94,8 @@ pub struct Disk {
     #[serde(deserialize_with = "number_or_isco")]
     pub inner_radius: f64,
     pub outer_radius: f64,
+    /// `"newtonian"` (the default for now) or `"page-thorne"`.
+    pub temperature_profile: TemperatureProfile,
     /// Emission scale (luminance of the hottest ring, seen unshifted).
     pub brightness: f64,
     /// Temperature of the hottest ring, kelvin (Novikov-Thorne profile).
@@ -124,6 +126,18 @@ pub struct Disk {
     pub color: VolumeColor,
 }
 
+/// The thin disk's temperature profile.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum TemperatureProfile {
+    /// T^4 ~ r^-3 (1 - sqrt(r_in / r)), the Newtonian limit (peak at 49/36 r_in).
+    #[default]
+    Newtonian,
+    /// Page & Thorne (1974): the relativistic Novikov-Thorne flux for the
+    /// hole's spin, zero at its ISCO whatever inner_radius says.
+    PageThorne,
+}
+
 /// How the volumetric disk is coloured.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
@@ -139,6 +153,7 @@ impl Default for Disk {
             normal: [0.0, 1.0, 0.0],
             inner_radius: 3.0,
             outer_radius: 12.0,
+            temperature_profile: TemperatureProfile::Newtonian,
             brightness: 1.2,
             temperature_k: 6000.0,
             structure: 0.8,

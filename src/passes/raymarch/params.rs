@@ -103,7 +103,14 @@ pub struct DiskParams {
     pub opacity: f32,
     /// x Keplerian.
     pub speed: f32,
-    pub _pad: [f32; 2],
+    /// 0: Newtonian profile; 1: Page-Thorne with the constants below.
+    pub profile: f32,
+    /// The hole's spin (Page-Thorne).
+    pub pt_spin: f32,
+    /// Page-Thorne: sqrt(ISCO / M) and the roots of x^3 - 3x + 2a.
+    pub pt_roots: [f32; 4],
+    /// Page-Thorne: each root's log coefficient, then 1.5 a.
+    pub pt_coef: [f32; 4],
 }
 
 /// The volumetric disk's gas.
@@ -224,6 +231,25 @@ fn flag(on: bool) -> f32 {
 }
 
 /// r⁻³ (1 - sqrt(r_in / r)) at the Novikov-Thorne peak, the shader's normaliser.
+/// The Page-Thorne part of the disk's block, and the profile's peak as the
+/// normaliser (Newtonian: zeros).
+fn page_thorne(scene: &Scene) -> DiskParams {
+    use crate::scene::TemperatureProfile;
+    if scene.disk.temperature_profile != TemperatureProfile::PageThorne {
+        return DiskParams::default();
+    }
+    let a = scene.black_holes.first().map_or(0.0, |h| h.spin);
+    let pt = crate::physics::kerr::PageThorne::new(a);
+    DiskParams {
+        profile: 1.0,
+        pt_spin: a as f32,
+        pt_roots: [pt.x0, pt.roots[0], pt.roots[1], pt.roots[2]].map(|x| x as f32),
+        pt_coef: [pt.coef[0], pt.coef[1], pt.coef[2], 1.5 * a].map(|x| x as f32),
+        nt_peak: crate::physics::kerr::page_thorne_peak(a).1 as f32,
+        ..DiskParams::default()
+    }
+}
+
 fn nt_profile_at_peak(r_in: f64) -> f64 {
     let r = crate::physics::disk::peak_radius(r_in.max(1e-6));
     r.powi(-3) * (1.0 - (r_in / r).sqrt())
@@ -316,7 +342,7 @@ fn disk(scene: &Scene) -> DiskParams {
         redshift: flag(scene.physics.gravitational_redshift),
         opacity: d.opacity as f32,
         speed: d.speed as f32,
-        _pad: [0.0; 2],
+        ..page_thorne(scene)
     }
 }
 

@@ -234,15 +234,64 @@ pub fn shadow_proxy(a: f64, lambda: f64, eta: f64, r_o: f64) -> f64 {
 /// so T^4 is proportional to f / r; 0 at the ISCO. Signed spin.
 pub fn page_thorne_f(r: f64, a: f64) -> f64 {
     let x = r.sqrt();
-    let x0 = r_isco(a).sqrt();
-    let t = a.acos() / 3.0;
-    let x1 = 2.0 * (t - PI / 3.0).cos();
-    let x2 = 2.0 * (t + PI / 3.0).cos();
-    let x3 = -2.0 * t.cos();
-    let term = |xi: f64, xj: f64, xk: f64| {
-        3.0 * (xi - a).powi(2) / (xi * (xi - xj) * (xi - xk)) * ((x - xi) / (x0 - xi)).ln()
-    };
-    let br =
-        x - x0 - 1.5 * a * (x / x0).ln() - term(x1, x2, x3) - term(x2, x1, x3) - term(x3, x1, x2);
+    let pt = PageThorne::new(a);
+    let log_terms: f64 = (0..3)
+        .map(|i| pt.coef[i] * ((x - pt.roots[i]) / (pt.x0 - pt.roots[i])).ln())
+        .sum();
+    let br = x - pt.x0 - 1.5 * a * (x / pt.x0).ln() - log_terms;
     1.5 / (x * x * (x.powi(3) - 3.0 * x + 2.0 * a)) * br
+}
+
+/// The constants of the Page-Thorne flux for spin a (M = 1): sqrt of the
+/// ISCO, the roots x1, x2, x3 of x^3 - 3x + 2a = 0 and each root's
+/// coefficient 3 (x_i - a)^2 / (x_i (x_i - x_j)(x_i - x_k)) (0 for a root
+/// at 0, its limit at a = 0).
+#[derive(Clone, Copy, Debug)]
+pub struct PageThorne {
+    pub x0: f64,
+    pub roots: [f64; 3],
+    pub coef: [f64; 3],
+}
+
+impl PageThorne {
+    pub fn new(a: f64) -> Self {
+        let t = a.acos() / 3.0;
+        let roots = [
+            2.0 * (t - PI / 3.0).cos(),
+            2.0 * (t + PI / 3.0).cos(),
+            -2.0 * t.cos(),
+        ];
+        let coef = std::array::from_fn(|i| {
+            let (xi, xj, xk) = (roots[i], roots[(i + 1) % 3], roots[(i + 2) % 3]);
+            if xi.abs() < 1e-12 {
+                0.0
+            } else {
+                3.0 * (xi - a).powi(2) / (xi * (xi - xj) * (xi - xk))
+            }
+        });
+        PageThorne {
+            x0: r_isco(a).sqrt(),
+            roots,
+            coef,
+        }
+    }
+}
+
+/// Where T^4 (proportional to f / r) peaks around a hole of spin a, and its
+/// value there (M = 1): golden-section search over (ISCO, 4 ISCO).
+pub fn page_thorne_peak(a: f64) -> (f64, f64) {
+    let isco = r_isco(a);
+    let t4 = |r: f64| page_thorne_f(r, a) / r;
+    let (mut lo, mut hi) = (isco * (1.0 + 1e-9), 4.0 * isco);
+    let phi = 0.5 * (5f64.sqrt() - 1.0);
+    for _ in 0..200 {
+        let (m1, m2) = (hi - phi * (hi - lo), lo + phi * (hi - lo));
+        if t4(m1) < t4(m2) {
+            lo = m1;
+        } else {
+            hi = m2;
+        }
+    }
+    let r = 0.5 * (lo + hi);
+    (r, t4(r))
 }
