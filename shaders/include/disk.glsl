@@ -6,6 +6,7 @@
 #define DISK_GLSL
 
 #include "params.glsl"
+#include "variant.glsl"
 #include "blackbody.glsl"
 #include "ray_state.glsl"
 
@@ -54,7 +55,7 @@ vec3 disk_color(float r, float g_full) {
     float r_in = P.disk.inner;
     // One reciprocal for the divisions (dear on a CPU driver).
     float ir = 1.0 / r;
-    float f = P.disk.profile > 0.5 ? page_thorne(r, rs)
+    float f = PAGE_THORNE ? page_thorne(r, rs)
             : max((1.0 - sqrt(r_in * ir)) * (ir * ir * ir), 0.0);
     float t_rel = sqrt(sqrt(f * (1.0 / P.disk.nt_peak)));   // T / T_peak
     // The gravitational part as this observer measures it: emitter's clock

@@ -31,5 +31,8 @@ layout(constant_id = 7) const int DISK_STAGE = DISK_STAGE_ALL;
 // The observer moves through the static frame (orbiting, falling): the
 // pixel directions are aberrated.
 layout(constant_id = 8) const bool OBSERVER_MOVES = false;
+// The thin disk's temperature follows Page and Thorne's relativistic flux
+// (else the Newtonian profile).
+layout(constant_id = 9) const bool PAGE_THORNE = false;
 
 #endif

@@ -171,6 +171,8 @@ pub struct Variant {
     pub disk_stage: u32,
     /// The observer moves through the static frame: aberration (constant 8).
     pub observer_moves: bool,
+    /// The thin disk's temperature is Page and Thorne's (constant 9).
+    pub page_thorne: bool,
 }
 
 impl Variant {
@@ -192,6 +194,8 @@ impl Variant {
             volume_blackbody: scene.disk.color == VolumeColor::Blackbody,
             disk_stage: glsl::DISK_STAGE_ALL,
             observer_moves: scene.observer().beta != glam::DVec3::ZERO,
+            page_thorne: scene.disk.temperature_profile
+                == crate::scene::TemperatureProfile::PageThorne,
         }
     }
 
@@ -210,7 +214,7 @@ impl Variant {
 
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against include/variant.glsl).
-    pub const CONSTANT_NAMES: [&'static str; 9] = [
+    pub const CONSTANT_NAMES: [&'static str; 10] = [
         "DISK_KIND",
         "SKY_KIND",
         "GRID_PLANE",
@@ -220,9 +224,10 @@ impl Variant {
         "VOLUME_BLACKBODY",
         "DISK_STAGE",
         "OBSERVER_MOVES",
+        "PAGE_THORNE",
     ];
 
-    pub fn constants(&self) -> [u32; 9] {
+    pub fn constants(&self) -> [u32; 10] {
         [
             self.disk,
             self.sky,
@@ -233,12 +238,13 @@ impl Variant {
             u32::from(self.volume_blackbody),
             self.disk_stage,
             u32::from(self.observer_moves),
+            u32::from(self.page_thorne),
         ]
     }
 
     pub fn name(&self) -> String {
         format!(
-            "raymarch{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {})",
+            "raymarch{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {}, page-thorne {})",
             if self.aov { " aov" } else { "" },
             self.path,
             self.disk,
@@ -249,7 +255,8 @@ impl Variant {
             self.thin_crossings,
             self.volume_blackbody,
             self.disk_stage,
-            self.observer_moves
+            self.observer_moves,
+            self.page_thorne
         )
     }
 }
