@@ -6,28 +6,9 @@ use blackhole::physics::closed_form::{LightPath, carlson_rf, ellip_k, jacobi_sn_
 use blackhole::physics::geodesic::{Disk, Hole, Outcome, TraceOptions, photon_lambda, trace};
 use glam::DVec3;
 
-/// A small deterministic generator (SplitMix64), so failures reproduce.
-struct Rng(u64);
+mod common;
 
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn unit(&mut self) -> DVec3 {
-        loop {
-            let v = DVec3::new(self.next(), self.next(), self.next()) * 2.0 - 1.0;
-            let l = v.length();
-            if l > 0.1 && l < 1.0 {
-                return v / l;
-            }
-        }
-    }
-}
+use common::Rng;
 
 #[test]
 fn special_functions_match_tables() {

@@ -19,8 +19,6 @@ use blackhole::physics::geodesic::{
     Disk, Hole, Outcome, TraceOptions, disk_azimuth, photon_lambda, trace,
 };
 use blackhole::physics::redshift::disk_redshift;
-use blackhole::scene::Scene;
-use common::{assert_clean, blackhole, path_in, run, scratch};
 use glam::DVec3;
 
 const DIR_TOL: f64 = 1e-5;
@@ -63,41 +61,22 @@ struct Figures {
     g: Vec<f64>,
 }
 
-/// Renders the geodesic AOV (W x H) of the scene `toml`; returns the scene
-/// as the renderer read it and the AOV.
-fn render_aov(toml: &str) -> (Scene, image::Rgba32FImage) {
-    let dir = scratch();
-    let scene_path = path_in(&dir, "scene.toml");
-    std::fs::write(&scene_path, toml).unwrap();
-    let out = path_in(&dir, "aov.exr");
-    let mut c = blackhole();
-    c.args(["render", "--aov", "geodesic", "--width"])
-        .arg(W.to_string())
-        .arg("--height")
-        .arg(H.to_string())
-        .arg("--scene")
-        .arg(&scene_path)
-        .arg("--out")
-        .arg(&out);
-    let (code, stdout, stderr) = run(c);
-    assert_clean(code, &stdout, &stderr);
-    let gpu = image::open(&out).expect("AOV EXR").to_rgba32f();
-    assert_eq!(gpu.dimensions(), (W, H));
-    (Scene::from_toml(toml, "scene").unwrap(), gpu)
-}
-
 fn compare(name: &str, position: [f64; 3], extra: &str) -> Figures {
-    let (scene, gpu) = render_aov(&format!(
-        "[camera]\nposition = [{}, {}, {}]\n{}{extra}",
-        position[0],
-        position[1],
-        position[2],
-        if extra.contains("vfov_deg") {
-            ""
-        } else {
-            "vfov_deg = 60.0\n"
-        }
-    ));
+    let (scene, gpu) = common::render_aov(
+        &format!(
+            "[camera]\nposition = [{}, {}, {}]\n{}{extra}",
+            position[0],
+            position[1],
+            position[2],
+            if extra.contains("vfov_deg") {
+                ""
+            } else {
+                "vfov_deg = 60.0\n"
+            },
+        ),
+        W,
+        H,
+    );
     let frame = scene.camera.frame();
     let holes: Vec<Hole> = scene
         .black_holes
@@ -424,11 +403,13 @@ fn accuracy_versus_quality() {
 /// horizon before the disk's plane.
 #[test]
 fn straight_rays_follow_lines_through_horizons_and_the_disk() {
-    let (scene, gpu) = render_aov(
+    let (scene, gpu) = common::render_aov(
         "[camera]\nposition = [0.0, 2.5, -8.0]\nvfov_deg = 70.0\n\n\
          [[black_hole]]\nposition = [0.0, 0.0, 0.0]\nrs = 1.0\n\n\
          [[black_hole]]\nposition = [6.0, 0.0, 1.0]\nrs = 0.8\n\n\
          [physics]\ngravity = false\n",
+        W,
+        H,
     );
     let frame = scene.camera.frame();
     let observer = scene.observer();

@@ -10,8 +10,7 @@ mod common;
 
 use blackhole::physics::kerr::{self, KerrDisk, KerrObserver, KerrOutcome, KerrRay};
 use blackhole::physics::observer::ObserverKind;
-use blackhole::scene::Scene;
-use common::{assert_clean, blackhole, path_in, run, scratch};
+use common::{blackhole, path_in, run, scratch};
 use glam::DVec3;
 
 const DIR_TOL: f64 = 1e-5;
@@ -26,31 +25,6 @@ fn p99(v: &mut [f64]) -> f64 {
     }
     v.sort_by(f64::total_cmp);
     v[((0.99 * v.len() as f64).ceil() as usize).clamp(1, v.len()) - 1]
-}
-
-fn render_aov(toml: &str) -> (Scene, image::Rgba32FImage) {
-    let dir = scratch();
-    let scene_path = path_in(&dir, "scene.toml");
-    std::fs::write(&scene_path, toml).unwrap();
-    let out = path_in(&dir, "aov.exr");
-    let mut c = blackhole();
-    c.args([
-        "render",
-        "--aov",
-        "geodesic",
-        "--width",
-        &W.to_string(),
-        "--height",
-        &H.to_string(),
-    ])
-    .arg("--scene")
-    .arg(&scene_path)
-    .arg("--out")
-    .arg(&out);
-    let (code, stdout, stderr) = run(c);
-    assert_clean(code, &stdout, &stderr);
-    let gpu = image::open(&out).expect("AOV EXR").to_rgba32f();
-    (Scene::from_toml(toml, "scene").unwrap(), gpu)
 }
 
 /// The f64 record of a ray as the AOV's four numbers.
@@ -88,13 +62,17 @@ struct Figures {
 }
 
 fn compare(spin: f64, position: [f64; 3], observer: &str) -> Figures {
-    let (scene, gpu) = render_aov(&format!(
-        "[[black_hole]]\nspin = {spin}\n[camera]\nposition = [{}, {}, {}]\nvfov_deg = 50.0\nobserver = \"{observer}\"\n[disk]\ninner_radius = {}\nouter_radius = 12.0\n",
-        position[0],
-        position[1],
-        position[2],
-        kerr::r_isco(spin) / 2.0
-    ));
+    let (scene, gpu) = common::render_aov(
+        &format!(
+            "[[black_hole]]\nspin = {spin}\n[camera]\nposition = [{}, {}, {}]\nvfov_deg = 50.0\nobserver = \"{observer}\"\n[disk]\ninner_radius = {}\nouter_radius = 12.0\n",
+            position[0],
+            position[1],
+            position[2],
+            kerr::r_isco(spin) / 2.0
+        ),
+        W,
+        H,
+    );
     let frame = scene.camera.frame();
     let kind = match scene.camera.observer {
         ObserverKind::Zamo => KerrObserver::Zamo,

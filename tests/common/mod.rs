@@ -147,3 +147,53 @@ pub fn rss_mb(pid: u32) -> f64 {
         .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<f64>().ok())
         .map_or(0.0, |kb| kb / 1024.0)
 }
+
+/// A small deterministic generator (SplitMix64), so failures reproduce.
+pub struct Rng(pub u64);
+
+impl Rng {
+    /// Uniform in [0, 1).
+    pub fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.next()
+    }
+
+    /// A random unit vector.
+    pub fn unit(&mut self) -> glam::DVec3 {
+        loop {
+            let v = glam::DVec3::new(self.next(), self.next(), self.next()) * 2.0 - 1.0;
+            let l = v.length();
+            if l > 0.1 && l < 1.0 {
+                return v / l;
+            }
+        }
+    }
+}
+
+/// Renders the geodesic AOV (`width` x `height`) of the scene `toml`;
+/// returns the scene as the renderer read it and the AOV.
+pub fn render_aov(toml: &str, width: u32, height: u32) -> (blackhole::Scene, image::Rgba32FImage) {
+    let dir = scratch();
+    let scene_path = path_in(&dir, "scene.toml");
+    std::fs::write(&scene_path, toml).unwrap();
+    let out = path_in(&dir, "aov.exr");
+    let mut c = blackhole();
+    c.args(["render", "--aov", "geodesic", "--width", &width.to_string()])
+        .args(["--height", &height.to_string(), "--scene"])
+        .arg(&scene_path)
+        .arg("--out")
+        .arg(&out);
+    let (code, stdout, stderr) = run(c);
+    assert_clean(code, &stdout, &stderr);
+    let gpu = image::open(&out).expect("AOV EXR").to_rgba32f();
+    assert_eq!(gpu.dimensions(), (width, height));
+    (blackhole::Scene::from_toml(toml, "scene").unwrap(), gpu)
+}
