@@ -16,6 +16,7 @@ const METRICS: &[(&str, &str)] = &[
     ("METRIC_FLAT", "flat"),
     ("METRIC_SUMMED", "summed"),
     ("METRIC_KERR", "kerr"),
+    ("METRIC_KERR KERR_F32_ROOTS", "kerr_f32"),
 ];
 const RAYMARCH_KINDS: &[(&[&str], &str)] = &[
     (&[], ""),
@@ -33,7 +34,7 @@ fn builds_of(name: &str) -> Vec<(String, Vec<&'static str>)> {
                 if *k == "_split" && *metric != "METRIC_SCHWARZSCHILD" {
                     continue;
                 }
-                let mut d = vec![*metric];
+                let mut d: Vec<&str> = metric.split(' ').collect();
                 d.extend_from_slice(defines);
                 builds.push((format!("raymarch_{m}{k}.comp"), d));
             }

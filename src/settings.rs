@@ -27,6 +27,9 @@ pub struct Settings {
     pub no_split: bool,
     /// `BLACKHOLE_NO_QUAD`: the ray march without quad subgroup operations.
     pub no_quad: bool,
+    /// `BLACKHOLE_NO_F64`: a spinning hole's per-ray constants in 32-bit
+    /// floats, as on a device without 64-bit floats in shaders.
+    pub no_f64: bool,
     /// `BLACKHOLE_FAULT`: a failure injected for the tests.
     pub fault: Option<Fault>,
 }
@@ -43,6 +46,7 @@ impl Default for Settings {
             gpu_timeout: Duration::from_secs_f64(DEFAULT_GPU_TIMEOUT_S),
             no_split: false,
             no_quad: false,
+            no_f64: false,
             fault: None,
         }
     }
@@ -61,6 +65,7 @@ pub const KNOWN: &[(&str, &str)] = &[
     ),
     ("BLACKHOLE_NO_SPLIT", "1 or 0"),
     ("BLACKHOLE_NO_QUAD", "1 or 0"),
+    ("BLACKHOLE_NO_F64", "1 or 0"),
     (
         "BLACKHOLE_FAULT",
         "device-lost, out-of-device-memory or alloc:<resource name>",
@@ -121,6 +126,7 @@ impl Settings {
                 }
                 "BLACKHOLE_NO_SPLIT" => s.no_split = switch(name, value)?,
                 "BLACKHOLE_NO_QUAD" => s.no_quad = switch(name, value)?,
+                "BLACKHOLE_NO_F64" => s.no_f64 = switch(name, value)?,
                 "BLACKHOLE_FAULT" => {
                     s.fault = Some(fault::parse(value).ok_or_else(|| bad(name, value))?);
                 }

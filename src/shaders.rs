@@ -25,11 +25,16 @@ macro_rules! spv {
 
 /// The ray march compiled for one metric (`shaders/include/metric.glsl`,
 /// the define build.rs sets) and one build; `None` for the split stages of
-/// a metric other than the closed form.
-pub fn raymarch(path: GpuPath, build: RaymarchBuild) -> Option<&'static [u8]> {
+/// a metric other than the closed form. The spinning hole has two: its
+/// per-ray constants in 64-bit floats (`kerr_f64`, where the device has
+/// them) or in 32-bit ones (`KERR_F32_ROOTS`).
+pub fn raymarch(path: GpuPath, build: RaymarchBuild, kerr_f64: bool) -> Option<&'static [u8]> {
     use GpuPath::*;
     use RaymarchBuild::*;
     Some(match (path, build) {
+        (Kerr, Beauty) if !kerr_f64 => spv!("raymarch_kerr_f32"),
+        (Kerr, NoQuad) if !kerr_f64 => spv!("raymarch_kerr_f32_no_quad"),
+        (Kerr, Aov) if !kerr_f64 => spv!("raymarch_kerr_f32_aov"),
         (ClosedForm, Beauty) => spv!("raymarch_schwarzschild"),
         (ClosedForm, NoQuad) => spv!("raymarch_schwarzschild_no_quad"),
         (ClosedForm, Aov) => spv!("raymarch_schwarzschild_aov"),

@@ -24,9 +24,11 @@ pub struct Features {
     /// every pixel (a GPU already skips the disk's code in the SIMD groups
     /// that miss it). Whether one frame is split: [`Features::splits`].
     pub disk_split: bool,
-    /// The spinning hole's light paths can run (in 64-bit floats, which
-    /// the device has).
-    pub spin: bool,
+    /// The spinning hole's per-ray constants (the quartic's roots and the
+    /// elliptic integrals' arguments) run in 64-bit floats, which the device
+    /// has; without them the build with 32-bit roots, exact away from a thin
+    /// band around the shadow's outline.
+    pub kerr_f64: bool,
 }
 
 impl Features {
@@ -39,7 +41,7 @@ impl Features {
                 && info.ballot_compute
                 && info.kind == vk::PhysicalDeviceType::CPU
                 && options.disk_split,
-            spin: info.float64,
+            kerr_f64: info.float64 && options.float64,
         }
     }
 

@@ -42,6 +42,9 @@ pub struct RendererOptions {
     /// Split the thin disk's ray march where the device and the frame
     /// gain by it (`BLACKHOLE_NO_SPLIT=1` keeps the one dispatch).
     pub disk_split: bool,
+    /// Compute a spinning hole's per-ray constants in 64-bit floats where
+    /// the device has them (`BLACKHOLE_NO_F64=1` takes the 32-bit build).
+    pub float64: bool,
 }
 
 impl Default for RendererOptions {
@@ -51,6 +54,7 @@ impl Default for RendererOptions {
             validation: Validation::from_env(),
             ray_differentials: !settings.no_quad,
             disk_split: !settings.no_split,
+            float64: !settings.no_f64,
         }
     }
 }

@@ -181,6 +181,16 @@ impl Rng {
 /// Renders the geodesic AOV (`width` x `height`) of the scene `toml`;
 /// returns the scene as the renderer read it and the AOV.
 pub fn render_aov(toml: &str, width: u32, height: u32) -> (blackhole::Scene, image::Rgba32FImage) {
+    render_aov_with(toml, width, height, &[])
+}
+
+/// [`render_aov`] with extra environment variables for the renderer.
+pub fn render_aov_with(
+    toml: &str,
+    width: u32,
+    height: u32,
+    env: &[(&str, &str)],
+) -> (blackhole::Scene, image::Rgba32FImage) {
     let dir = scratch();
     let scene_path = path_in(&dir, "scene.toml");
     std::fs::write(&scene_path, toml).unwrap();
@@ -190,7 +200,8 @@ pub fn render_aov(toml: &str, width: u32, height: u32) -> (blackhole::Scene, ima
         .args(["--height", &height.to_string(), "--scene"])
         .arg(&scene_path)
         .arg("--out")
-        .arg(&out);
+        .arg(&out)
+        .envs(env.iter().copied());
     let (code, stdout, stderr) = run(c);
     assert_clean(code, &stdout, &stderr);
     let gpu = image::open(&out).expect("AOV EXR").to_rgba32f();

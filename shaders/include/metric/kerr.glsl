@@ -9,12 +9,18 @@
 // steps; the azimuth and the escape direction come from Carlson's
 // integrals.
 //
-// Precision: this build computes the path in 64-bit floats (the device's
-// shaderFloat64; a device without it is refused for a spinning hole, with a
-// message). GLSL has no 64-bit sin, cos or inverse functions: the path
-// needs only square roots and the four operations, plus cos and sin of
-// double angles (kerr_cos_sin below) and an f32 estimate of one cube root
-// or arccosine that Newton's method then refines in f64.
+// Precision. The per-ray constants (the Boyer-Lindquist position, lambda
+// and eta, the quartic's roots, the case and the arguments of the elliptic
+// integrals at the camera and at the path's end) are computed in `kreal`:
+// 64-bit floats where the device has shaderFloat64, since near the shadow's
+// outline the roots' differences cancel far below f32 resolution (0.1
+// relative error in r4 - r3 in plain f32, below 1e-9 in f64). Everything
+// after (Carlson's integrals, the Jacobi functions, the crossings, the
+// azimuth) runs in 32-bit floats, whose 1e-7 relative error keeps the
+// escape direction within 1e-5 rad and the disk radius within 2e-4 rs
+// (tests/kerr_gpu.rs). A device without 64-bit floats gets the build with
+// KERR_F32_ROOTS: the same path with kreal = float, exact away from a thin
+// band around the shadow's outline.
 //
 // Units: M = 1 inside (lengths in rs = 2M = 1 at the boundary); the hole's
 // frame has x = disk e1, y = the spin axis (the disk's normal), z = e2.
@@ -22,342 +28,379 @@
 #define METRIC_KERR_GLSL
 
 // Loops stay loops: unrolled and inlined at every call, the kernels below
-// made a shader that the driver took minutes to compile.
+// make a shader that the driver takes minutes to compile.
 #extension GL_EXT_control_flow_attributes : require
 
 #include "params.glsl"
 #include "variant.glsl"
 #include "hit.glsl"
 #include "disk.glsl"
+#include "lightpath.glsl"
 #include "metric/static_frame.glsl"
+
+#ifdef KERR_F32_ROOTS
+#define kreal float
+#define kvec3 vec3
+#else
+#define kreal double
+#define kvec3 dvec3
+#endif
 
 // --------------------------------------------------------------- kernels
 
-// cos and sin of a double angle: reduced by pi/2 in three parts (fdlibm's
-// split), then Taylor series to x^23 on [-pi/4, pi/4].
-dvec2 kerr_cos_sin(double x) {
-    double q = round(x * 0.63661977236758134308lf);
-    double r = (x - q * 1.57079632673412561417lf) - q * 6.07710050650619224932e-11lf;
-    double r2 = r * r;
-    // Taylor series, Horner in r^2: sin to r^23, cos to r^22 (1 / n!).
-    const double S[11] = double[11](-1.0lf / 6.0lf, 1.0lf / 120.0lf, -1.0lf / 5040.0lf, 1.0lf / 362880.0lf,
-        -1.0lf / 39916800.0lf, 1.0lf / 6227020800.0lf, -1.0lf / 1307674368000.0lf, 1.0lf / 355687428096000.0lf,
-        -1.0lf / 121645100408832000.0lf, 1.0lf / 51090942171709440000.0lf, -1.0lf / 25852016738884976640000.0lf);
-    const double C[11] = double[11](-0.5lf, 1.0lf / 24.0lf, -1.0lf / 720.0lf, 1.0lf / 40320.0lf,
-        -1.0lf / 3628800.0lf, 1.0lf / 479001600.0lf, -1.0lf / 87178291200.0lf, 1.0lf / 20922789888000.0lf,
-        -1.0lf / 6402373705728000.0lf, 1.0lf / 2432902008176640000.0lf, -1.0lf / 1124000727777607680000.0lf);
-    double ps = 0.0lf, pc = 0.0lf;
-    [[dont_unroll]] for (int i = 10; i >= 0; --i) {
-        ps = ps * r2 + S[i];
-        pc = pc * r2 + C[i];
-    }
-    double sn = r + r * r2 * ps;
-    double cs = 1.0lf + r2 * pc;
-    int k = int(q - 4.0lf * floor(q * 0.25lf));
-    if (k == 0) return dvec2(cs, sn);
-    if (k == 1) return dvec2(-sn, cs);
-    if (k == 2) return dvec2(-cs, -sn);
-    return dvec2(sn, -cs);
+// atan(t), t >= 0, to full f32 precision (a driver's atan may be 4096 ulp
+// off): by asin_precise of an argument at most 1/sqrt(2).
+float atan_precise(float t) {
+    float u = t > 1.0 ? 1.0 / t : t;
+    float v = asin_precise(u * inversesqrt(1.0 + u * u));
+    return t > 1.0 ? HALF_PI - v : v;
 }
 
-// Carlson's R_F (Numerical Recipes' duplication, tolerance 0.0025 with the
-// fifth-order series: below 1e-16 relative).
-double kerr_rf(double x, double y, double z) {
-    double ave, dx, dy, dz;
-    [[dont_unroll]] for (int i = 0; i < 40; ++i) {
-        double sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
-        double l = sx * (sy + sz) + sy * sz;
-        x = 0.25lf * (x + l);
-        y = 0.25lf * (y + l);
-        z = 0.25lf * (z + l);
-        ave = (x + y + z) / 3.0lf;
-        dx = (ave - x) / ave;
-        dy = (ave - y) / ave;
-        dz = (ave - z) / ave;
-        if (max(max(abs(dx), abs(dy)), abs(dz)) < 0.0025lf) break;
-    }
-    double e2 = dx * dy - dz * dz, e3 = dx * dy * dz;
-    return (1.0lf + (e2 / 24.0lf - 0.1lf - 3.0lf * e3 / 44.0lf) * e2 + e3 / 14.0lf) / sqrt(ave);
-}
-
-// Carlson's R_C(x, y), x >= 0, y != 0; the Cauchy principal value for y < 0.
-double kerr_rc(double x, double y) {
-    double w = 1.0lf;
-    if (y < 0.0lf) {
-        w = sqrt(x) / sqrt(x - y);
-        x = x - y;
+// Carlson's R_C(x, y), x >= 0, y != 0 (the Cauchy principal value for
+// y < 0), in closed form: atan or asinh of sqrt(|y - x| / .), its series
+// where y is within 2% of x.
+float kerr_rc(float x, float y) {
+    float w = 1.0;
+    if (y < 0.0) {
+        w = sqrt(x / (x - y));
+        x -= y;
         y = -y;
     }
-    double ave, s;
-    [[dont_unroll]] for (int i = 0; i < 40; ++i) {
-        double l = 2.0lf * sqrt(x) * sqrt(y) + y;
-        x = 0.25lf * (x + l);
-        y = 0.25lf * (y + l);
-        ave = (x + y + y) / 3.0lf;
-        s = (y - ave) / ave;
-        if (abs(s) < 0.0012lf) break;
+    float d = y - x;
+    float r;
+    if (abs(d) < 0.02 * x) {
+        float e = d / x;
+        r = inversesqrt(x) * (1.0 + e * (-1.0 / 3.0 + e * (0.2 + e * (-1.0 / 7.0 + e * (1.0 / 9.0)))));
+    } else if (d > 0.0) {
+        float v = d < x ? atan_precise(sqrt(d / x)) : HALF_PI - atan_precise(sqrt(x / d));
+        r = v * inversesqrt(d);
+    } else {
+        r = asinh_precise(sqrt(-d / y)) * inversesqrt(-d);
     }
-    return w * (1.0lf + s * s * (0.3lf + s * (1.0lf / 7.0lf + s * (0.375lf + s * 9.0lf / 22.0lf)))) / sqrt(ave);
+    return w * r;
 }
 
-// Carlson's R_J(x, y, z, p), p > 0.
-double kerr_rj(double x, double y, double z, double p) {
-    double sum = 0.0lf, fac = 1.0lf;
-    double ave, dx, dy, dz, dp;
-    [[dont_unroll]] for (int i = 0; i < 40; ++i) {
-        double sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
-        double l = sx * (sy + sz) + sy * sz;
-        double al = p * (sx + sy + sz) + sx * sy * sz;
-        al *= al;
-        double be = p * (p + l) * (p + l);
-        sum += fac * kerr_rc(al, be);
-        fac *= 0.25lf;
-        x = 0.25lf * (x + l);
-        y = 0.25lf * (y + l);
-        z = 0.25lf * (z + l);
-        p = 0.25lf * (p + l);
-        ave = 0.2lf * (x + y + z + p + p);
-        dx = (ave - x) / ave;
-        dy = (ave - y) / ave;
-        dz = (ave - z) / ave;
-        dp = (ave - p) / ave;
-        if (max(max(abs(dx), abs(dy)), max(abs(dz), abs(dp))) < 0.0015lf) break;
+// R_C(1, 1 + e) for |e| < 0.03 (every duplication turn of R_J after the
+// first): its series to e^6, error below 2e-12.
+float kerr_rc_series(float e) {
+    return 1.0 + e * (-1.0 / 3.0 + e * (0.2 + e * (-1.0 / 7.0 + e * (1.0 / 9.0 + e * (-1.0 / 11.0 + e * (1.0 / 13.0))))));
+}
+
+vec2 kerr_rc_series(vec2 e) {
+    return 1.0 + e * (-1.0 / 3.0 + e * (0.2 + e * (-1.0 / 7.0 + e * (1.0 / 9.0 + e * (-1.0 / 11.0 + e * (1.0 / 13.0))))));
+}
+
+// R_C(1, 1 + e) for |e| < 1 (R_J's first turn): atan or atanh of sqrt|e|.
+float kerr_rc_first(float e) {
+    if (abs(e) < 0.03) return kerr_rc_series(e);
+    float t = sqrt(abs(e)), u = t * inversesqrt(1.0 + e);
+    return (e > 0.0 ? asin_precise(u) : asinh_precise(u)) / t;
+}
+
+// Carlson's series of R_J at the end of the duplication (DLMF 19.36.2),
+// from the mean a and the last arguments; 4^-m a^(-3/2) times it.
+float kerr_rj_tail(float x, float y, float z, float p, float a, float fac) {
+    float ia = 1.0 / a;
+    float bx = (a - x) * ia, by = (a - y) * ia, bz = (a - z) * ia;
+    float bp = -0.5 * (bx + by + bz);
+    float xyz = bx * by * bz, p2 = bp * bp;
+    float e2 = bx * by + bx * bz + by * bz - 3.0 * p2;
+    float e3 = xyz + 2.0 * e2 * bp + 4.0 * p2 * bp;
+    float e4 = (2.0 * xyz + e2 * bp + 3.0 * p2 * bp) * bp;
+    float e5 = xyz * p2;
+    float series = 1.0 - (3.0 / 14.0) * e2 + e3 * (1.0 / 6.0) + (9.0 / 88.0) * e2 * e2 - (3.0 / 22.0) * e4
+                 - (9.0 / 52.0) * e2 * e3 + (3.0 / 26.0) * e5;
+    return fac * ia * sqrt(ia) * series;
+}
+
+// Carlson's R_J(x, y, z, p), p > 0 (Carlson 1995, DLMF 19.36.2): each
+// duplication turn adds 4^-m R_C(1, 1 + e_m) / d_m with d = prod(sqrt p +
+// sqrt x_i) and e = prod(sqrt p - sqrt x_i) / d, so |e| < 1, and it falls
+// some 64-fold a turn: the first turn takes atan or atanh, the rest the
+// series. Until the arguments are within 0.1 of their mean; then the
+// fifth-order series, whose error there is below 3e-8.
+float kerr_rj(float x, float y, float z, float p) {
+    float sum = 0.0, fac = 1.0, a;
+    [[dont_unroll]] for (int i = 0; i < 16; ++i) {
+        float sx = sqrt(x), sy = sqrt(y), sz = sqrt(z), sp = sqrt(p);
+        float l = sx * (sy + sz) + sy * sz;
+        float id = 1.0 / ((sp + sx) * (sp + sy) * (sp + sz));
+        float e = (sp - sx) * (sp - sy) * (sp - sz) * id;
+        sum += fac * id * (i == 0 ? kerr_rc_first(e) : kerr_rc_series(e));
+        fac *= 0.25;
+        x = 0.25 * (x + l);
+        y = 0.25 * (y + l);
+        z = 0.25 * (z + l);
+        p = 0.25 * (p + l);
+        a = 0.2 * (x + y + z + p + p);
+        if (max(max(abs(a - x), abs(a - y)), max(abs(a - z), abs(a - p))) < 0.1 * a) break;
     }
-    const double C1 = 3.0lf / 14.0lf, C2 = 1.0lf / 3.0lf, C3 = 3.0lf / 22.0lf, C4 = 3.0lf / 26.0lf;
-    double ea = dx * (dy + dz) + dy * dz;
-    double eb = dx * dy * dz;
-    double ec = dp * dp;
-    double ed = ea - 3.0lf * ec;
-    double ee = eb + 2.0lf * dp * (ea - ec);
-    double ans = 1.0lf + ed * (-C1 + 0.75lf * C3 * ed - 1.5lf * C4 * ee) + eb * (0.5lf * C2 + dp * (-2.0lf * C3 + dp * C4))
-               + dp * ea * (C2 - dp * C3) - C2 * dp * ec;
-    return 3.0lf * sum + fac * ans / (ave * sqrt(ave));
+    return kerr_rj_tail(x, y, z, p, a, fac) + 6.0 * sum;
 }
 
-double kerr_k(double m) {
-    return kerr_rf(0.0lf, 1.0lf - m, 1.0lf);
-}
-
-// F(phi | m) from s = sin(phi) (signed), c2 = cos^2(phi).
-double kerr_f(double s, double c2, double m) {
-    return s * kerr_rf(c2, 1.0lf - m * s * s, 1.0lf);
-}
-
-// Pi(n; phi | m), |phi| <= pi/2, n <= 1.
-double kerr_pi(double n, double s, double c2, double m) {
-    double d2 = 1.0lf - m * s * s;
-    return s * kerr_rf(c2, d2, 1.0lf) + n / 3.0lf * s * s * s * kerr_rj(c2, d2, 1.0lf, 1.0lf - n * s * s);
-}
-
-// Pi(-N; phi | m), 0 <= phi <= pi/2, stable for large N (partner -m/N).
-double kerr_pi_neg(double bn, double s, double c2, double m) {
-    if (bn <= sqrt(m) || bn == 0.0lf) return kerr_pi(-bn, s, c2, m);
-    double d2 = 1.0lf - m * s * s;
-    double np = -m / bn;
-    return s * kerr_rc(c2 * d2, (1.0lf + bn * s * s) * (1.0lf - np * s * s))
-         + (-np / 3.0lf) * s * s * s * kerr_rj(c2, d2, 1.0lf, 1.0lf - np * s * s);
-}
-
-// Pi(n; phi | m) for any n (principal value past the pole, n > 1), c >= 0.
-double kerr_pi_any(double n, double s, double c, double m) {
-    if (n <= 1.0lf) return kerr_pi(n, s, c * c, m);
-    double d2 = 1.0lf - m * s * s, n2 = m / n;
-    return kerr_f(s, c * c, m) - kerr_pi(n2, s, c * c, m) + s * kerr_rc(c * c * d2, (1.0lf - n * s * s) * (1.0lf - n2 * s * s));
-}
-
-double kerr_pi_complete(double n, double m) {
-    if (n <= 1.0lf) return kerr_rf(0.0lf, 1.0lf - m, 1.0lf) + n / 3.0lf * kerr_rj(0.0lf, 1.0lf - m, 1.0lf, 1.0lf - n);
-    double n2 = m / n;
-    return kerr_k(m) - (kerr_rf(0.0lf, 1.0lf - m, 1.0lf) + n2 / 3.0lf * kerr_rj(0.0lf, 1.0lf - m, 1.0lf, 1.0lf - n2));
-}
-
-// Jacobi sn, cn, dn of any real u, 0 <= m < 1 (Bulirsch's recurrence on
-// the arithmetic-geometric mean: one cos and sin, no inverse functions).
-dvec3 kerr_sncndn(double u, double m) {
-    double emc = 1.0lf - m;
-    if (m < 1e-300lf) {
-        dvec2 cs = kerr_cos_sin(u);
-        return dvec3(cs.y, cs.x, 1.0lf);
+// R_J for two values of p at once: x, y, z duplicate the same whatever p
+// (the two horizons of one point of a path share them).
+vec2 kerr_rj2(float x, float y, float z, vec2 p) {
+    vec2 sum = vec2(0.0), a;
+    float fac = 1.0;
+    [[dont_unroll]] for (int i = 0; i < 16; ++i) {
+        float sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
+        vec2 sp = sqrt(p);
+        float l = sx * (sy + sz) + sy * sz;
+        vec2 id = 1.0 / ((sp + sx) * (sp + sy) * (sp + sz));
+        vec2 e = (sp - sx) * (sp - sy) * (sp - sz) * id;
+        sum += fac * id * (i == 0 ? vec2(kerr_rc_first(e.x), kerr_rc_first(e.y)) : kerr_rc_series(e));
+        fac *= 0.25;
+        x = 0.25 * (x + l);
+        y = 0.25 * (y + l);
+        z = 0.25 * (z + l);
+        p = 0.25 * (p + l);
+        a = 0.2 * (x + y + z + p + p);
+        vec2 spread = max(vec2(max(max(abs(a.x - x), abs(a.x - y)), abs(a.x - z)), max(max(abs(a.y - x), abs(a.y - y)), abs(a.y - z))),
+                          abs(a - p));
+        if (all(lessThan(spread, 0.1 * a))) break;
     }
-    double em[14], en[14];
-    double a = 1.0lf, dn = 1.0lf, c = 1.0lf;
-    int l = 0;
-    [[dont_unroll]] for (int i = 0; i < 13; ++i) {
-        l = i;
-        em[i] = a;
-        emc = sqrt(emc);
-        en[i] = emc;
-        c = 0.5lf * (a + emc);
-        if (abs(a - emc) <= 3e-8lf * a) break;
-        emc *= a;
-        a = c;
-    }
-    dvec2 cs = kerr_cos_sin(u * c);
-    double sn = cs.y, cn = cs.x;
-    if (sn != 0.0lf) {
-        a = cn / sn;
-        c *= a;
-        [[dont_unroll]] for (int i = l; i >= 0; --i) {
-            double b = em[i];
-            a *= c;
-            c *= dn;
-            dn = (en[i] + a) / (b + a);
-            a = c / b;
-        }
-        a = 1.0lf / sqrt(c * c + 1.0lf);
-        sn = sn >= 0.0lf ? a : -a;
-        cn = c * sn;
-    }
-    return dvec3(sn, cn, sqrt(max(1.0lf - m * sn * sn, 0.0lf)));
+    return vec2(kerr_rj_tail(x, y, z, p.x, a.x, fac), kerr_rj_tail(x, y, z, p.y, a.y, fac)) + 6.0 * sum;
 }
 
-// The integral of 1 / (1 + N sn^2) from 0 to any real psi (period 2K).
-double kerr_pi_neg_continued(double bn, double psi, double m, double k) {
-    double j = floor((psi + k) / (2.0lf * k));
-    double pr = psi - 2.0lf * j * k;
-    dvec3 e = kerr_sncndn(abs(pr), m);
-    return 2.0lf * j * kerr_pi_neg(bn, 1.0lf, 0.0lf, m) + (pr < 0.0lf ? -1.0lf : 1.0lf) * kerr_pi_neg(bn, e.x, e.y * e.y, m);
+// A point of an elliptic integral: amplitude phi in [0, pi/2] as s =
+// sin(phi) >= 0 and c2 = cos^2(phi), f = F(phi | m); the value wanted there
+// is sgn (fold ? 2 Pi_c - Pi(phi) : Pi(phi)) (an argument past K or
+// negative), and j counts the periods 2K taken off.
+struct KerrPoint {
+    float s, c2, f, sgn, j;
+    bool fold;
+};
+
+// Pi(n; phi | m) at a point, any n (the principal value past the pole,
+// n s^2 > 1, through the partner m / n; DLMF 19.7.8).
+float kerr_pi(float n, KerrPoint e, float m, float mc) {
+    float s2 = e.s * e.s, d2 = mc + m * e.c2;
+    bool pv = n > 1.0;
+    float nn = pv ? m / n : n;
+    float t = nn * (1.0 / 3.0) * s2 * e.s * kerr_rj(e.c2, d2, 1.0, 1.0 - nn * s2);
+    if (pv) {
+        float pole = 1.0 - n * s2;
+        pole = abs(pole) < 1e-6 ? (pole < 0.0 ? -1e-6 : 1e-6) : pole;
+        return e.s * kerr_rc(e.c2 * d2, pole * (1.0 - nn * s2)) - t;
+    }
+    return e.f + t;
 }
 
-// The integral of 1 / (1 - n sn^2) from 0 to xi in [0, 2K] (PV for n > 1).
-double kerr_pi_of_xi(double n, double xi, double m, double k) {
-    if (xi <= k) {
-        dvec3 e = kerr_sncndn(xi, m);
-        return kerr_pi_any(n, e.x, abs(e.y), m);
-    }
-    dvec3 e = kerr_sncndn(2.0lf * k - xi, m);
-    return 2.0lf * kerr_pi_complete(n, m) - kerr_pi_any(n, e.x, abs(e.y), m);
+// Pi(-N; phi | m), N >= 0, stable for large N (near the spin axis N grows
+// as 1 / lambda^2): past sqrt(m) through the partner -m / N.
+float kerr_pi_neg(float bn, KerrPoint e, float m, float mc) {
+    float s2 = e.s * e.s, d2 = mc + m * e.c2;
+    bool partner = bn > sqrt(m);
+    float np = partner ? m / bn : bn;
+    float t = np * (1.0 / 3.0) * s2 * e.s * kerr_rj(e.c2, d2, 1.0, 1.0 + np * s2);
+    if (partner) return e.s * kerr_rc(e.c2 * d2, (1.0 + bn * s2) * (1.0 + np * s2)) + t;
+    return e.f - t;
+}
+
+// The complete Pi(n | m) (n > 1: the principal value) and Pi(-N | m).
+float kerr_pi_complete(float n, float kk, float m, float mc) {
+    bool pv = n > 1.0;
+    float nn = pv ? m / n : n;
+    float t = nn * (1.0 / 3.0) * kerr_rj(0.0, mc, 1.0, 1.0 - nn);
+    return pv ? -t : kk + t;
+}
+
+float kerr_pi_neg_complete(float bn, float kk, float m, float mc) {
+    KerrPoint e = KerrPoint(1.0, 0.0, kk, 1.0, 0.0, false);
+    return kerr_pi_neg(bn, e, m, mc);
+}
+
+// The point of argument u in [0, 2K] (folded at K: sn(2K - u) = sn u).
+KerrPoint kerr_point_2k(float u, float sgn, Agm g, float kk) {
+    KerrPoint e;
+    e.fold = u > kk;
+    e.f = max(e.fold ? 2.0 * kk - u : u, 0.0);
+    vec2 sc = jacobi_sn_cn(e.f, g);
+    e.s = sc.x;
+    e.c2 = sc.y * sc.y;
+    e.sgn = sgn;
+    e.j = 0.0;
+    return e;
+}
+
+// The point of any real argument u, reduced by periods 2K into [-K, K).
+KerrPoint kerr_point_any(float u, Agm g, float kk) {
+    float j = floor((u + kk) / (2.0 * kk));
+    float pr = u - 2.0 * j * kk;
+    KerrPoint e = kerr_point_2k(abs(pr), pr < 0.0 ? -1.0 : 1.0, g, kk);
+    e.j = j;
+    return e;
 }
 
 // 16-point Gauss-Legendre on [-1, 1]: the positive nodes and their weights.
-const double KERR_GL_X[8] = double[8](0.09501250983763744lf, 0.2816035507792589lf, 0.45801677765722737lf,
-    0.6178762444026438lf, 0.755404408355003lf, 0.8656312023878318lf, 0.9445750230732326lf, 0.9894009349916499lf);
-const double KERR_GL_W[8] = double[8](0.18945061045506864lf, 0.18260341504492364lf, 0.16915651939500265lf,
-    0.1495959888165767lf, 0.12462897125553407lf, 0.0951585116824926lf, 0.062253523938647456lf, 0.027152459411754176lf);
+const float KERR_GL_X[8] = float[8](0.09501250983763744, 0.2816035507792589, 0.45801677765722737,
+    0.6178762444026438, 0.755404408355003, 0.8656312023878318, 0.9445750230732326, 0.9894009349916499);
+const float KERR_GL_W[8] = float[8](0.18945061045506864, 0.18260341504492364, 0.16915651939500265,
+    0.1495959888165767, 0.12462897125553407, 0.0951585116824926, 0.062253523938647456, 0.027152459411754176);
+
+vec2 kerr_gl_node(int i) {
+    return i < 8 ? vec2(-KERR_GL_X[7 - i], KERR_GL_W[7 - i]) : vec2(KERR_GL_X[i - 8], KERR_GL_W[i - 8]);
+}
 
 // --------------------------------------------------------------- the path
 
+// The radial motion. The quartic R(r) = (r^2 + a^2 - a lambda)^2 - Delta
+// (eta + (lambda - a)^2) has roots r1 <= r2 <= r3 <= r4 (case 2: the
+// camera outside r4; case 1: between r2 and r3; case 3: r3, r4 complex;
+// case 4: all four complex). Cases 1 and 2: r(X) from sn(X) with X =
+// X_o + rate tau; case 3 from cn(xi) with xi = xi_o +- rate tau.
 struct KerrRadial {
-    int kcase;        // GL's radial case 1..4
+    int kcase;
     bool captured;
-    double tau_end;
-    double m, k, rate;
-    double r1, r2, r3, r4;  // real roots (case 3: r1, r2; case 4: unused)
-    double x0;              // cases 1, 2: X at the camera
-    double ba, bb, xi_o;    // case 3: A, B and xi at the camera
-    double s_r;
-    double i_phi_end;       // case 4: I_phi to infinity (quadrature)
+    float tau_end;
+    float m, mc, kk, rate;
+    float r1, r2, r3, r4;
+    float r21, r31, r32, r41, r43;
+    float ba, bb;        // case 3: A and B
+    float x0;            // X (case 3: xi) at the camera
+    float s_r;
+    float i_phi_end;     // case 4: I_phi to the end (quadrature)
+    vec2 rh, ah;         // the horizons r+, r- and a A+-, their weights in I_phi
+    // The R_F arguments (cos^2, delta^2) and sin^2 of the camera's point
+    // and of the path's end (infinity or the horizon), and their folds.
+    vec3 rf_cam, rf_end;
+    bool fold_cam, fold_end;
+    KerrPoint cam;
+    Agm agm;
 };
 
 // u-space integrand f(u) = u^4 R(1/u) (no cancellation at large r).
-double kerr_f_u(double u, double a, double lam, double eta) {
-    return 1.0lf - (eta + lam * lam - a * a) * u * u + 2.0lf * (eta + (lam - a) * (lam - a)) * u * u * u - a * a * eta * u * u * u * u;
+float kerr_f_u(float u, float a, float lam, float eta) {
+    return 1.0 - (eta + lam * lam - a * a) * u * u + 2.0 * (eta + (lam - a) * (lam - a)) * u * u * u
+         - a * a * eta * u * u * u * u;
 }
 
-KerrRadial kerr_radial(double a, double lam, double eta, double r_o, double s_r) {
+// The per-ray part, in kreal: the roots, the case, the modulus, and the
+// R_F arguments at the two ends (kerr_radial_ends finishes it in f32).
+KerrRadial kerr_radial(kreal a, kreal lam, kreal eta, kreal r_o, float s_r) {
     KerrRadial k;
     k.s_r = s_r;
-    k.i_phi_end = 0.0lf;
-    double rp = 1.0lf + sqrt(1.0lf - a * a);
-    double ca = a * a - eta - lam * lam;
-    double cb = 2.0lf * (eta + (lam - a) * (lam - a));
-    double cc = -a * a * eta;
-    double p = -ca * ca / 12.0lf - cc;
-    double q = -ca / 3.0lf * ((ca / 6.0lf) * (ca / 6.0lf) - cc) - cb * cb / 8.0lf;
-    double disc = (p / 3.0lf) * (p / 3.0lf) * (p / 3.0lf) + (q / 2.0lf) * (q / 2.0lf);
-    // z^2 = Z: an f32 estimate, then Newton on the resolvent cubic in f64.
+    k.i_phi_end = 0.0;
+    k.fold_cam = false;
+    k.fold_end = false;
+    k.rf_cam = vec3(1.0, 1.0, 0.0);
+    k.rf_end = vec3(1.0, 1.0, 0.0);
+    k.r1 = k.r2 = k.r3 = k.r4 = 0.0;
+    k.r21 = k.r31 = k.r32 = k.r41 = k.r43 = 1.0;
+    k.ba = k.bb = 1.0;
+    kreal rp = 1.0 + sqrt(1.0 - a * a), rm = a * a / rp;
+    k.rh = vec2(float(rp), float(rm));
+    k.ah = vec2(float(a * (2.0 * rp - a * lam) / (rp - rm)), float(-a * (2.0 * rm - a * lam) / (rp - rm)));
+    kreal ca = a * a - eta - lam * lam;
+    kreal cb = 2.0 * (eta + (lam - a) * (lam - a));
+    kreal cc = -a * a * eta;
+    kreal p = -ca * ca / 12.0 - cc;
+    kreal q = -ca / 3.0 * ((ca / 6.0) * (ca / 6.0) - cc) - cb * cb / 8.0;
+    kreal disc = (p / 3.0) * (p / 3.0) * (p / 3.0) + (q / 2.0) * (q / 2.0);
+    // z^2 = Z: an f32 estimate (trigonometric or Cardano), then Newton on
+    // the resolvent cubic 16Z^3 + 8AZ^2 + (A^2 - 4C)Z - B^2/4 in kreal.
     float w;
-    if (disc < 0.0lf) {
-        float sp = float(sqrt(-p / 3.0lf));
-        w = 2.0 * sp * cos(acos(clamp(float(-q / 2.0lf) / (sp * sp * sp), -1.0, 1.0)) / 3.0);
+    if (disc < 0.0) {
+        float sp = float(sqrt(-p / 3.0));
+        w = 2.0 * sp * cos(acos(clamp(float(-q / 2.0) / (sp * sp * sp), -1.0, 1.0)) / 3.0);
     } else {
-        double sd = sqrt(disc);
-        double u1 = -q / 2.0lf + sd, u2 = -q / 2.0lf - sd;
-        double c1 = double(sign(float(u1)) * pow(abs(float(u1)), 1.0 / 3.0));
-        double c2 = double(sign(float(u2)) * pow(abs(float(u2)), 1.0 / 3.0));
+        kreal sd = sqrt(disc);
+        kreal u1 = -q / 2.0 + sd, u2 = -q / 2.0 - sd;
+        kreal c1 = kreal(sign(float(u1)) * pow(abs(float(u1)), 1.0 / 3.0));
+        kreal c2 = kreal(sign(float(u2)) * pow(abs(float(u2)), 1.0 / 3.0));
         [[dont_unroll]] for (int i = 0; i < 3; ++i) {
-            if (c1 != 0.0lf) c1 -= (c1 * c1 * c1 - u1) / (3.0lf * c1 * c1);
-            if (c2 != 0.0lf) c2 -= (c2 * c2 * c2 - u2) / (3.0lf * c2 * c2);
+            if (c1 != 0.0) c1 -= (c1 * c1 * c1 - u1) / (3.0 * c1 * c1);
+            if (c2 != 0.0) c2 -= (c2 * c2 * c2 - u2) / (3.0 * c2 * c2);
         }
         w = float(c1 + c2);
     }
-    double zz = double(w) / 2.0lf - ca / 6.0lf;
+    kreal zz = kreal(w) / 2.0 - ca / 6.0;
     [[dont_unroll]] for (int i = 0; i < 4; ++i) {
-        double f = ((16.0lf * zz + 8.0lf * ca) * zz + (ca * ca - 4.0lf * cc)) * zz - cb * cb / 4.0lf;
-        double df = (48.0lf * zz + 16.0lf * ca) * zz + (ca * ca - 4.0lf * cc);
-        if (df != 0.0lf) zz -= f / df;
+        kreal f = ((16.0 * zz + 8.0 * ca) * zz + (ca * ca - 4.0 * cc)) * zz - cb * cb / 4.0;
+        kreal df = (48.0 * zz + 16.0 * ca) * zz + (ca * ca - 4.0 * cc);
+        if (df != 0.0) zz -= f / df;
     }
-    double z = sqrt(max(zz, 0.0lf));
-    double q1 = -ca / 2.0lf - zz + cb / (4.0lf * z);
-    double q2 = -ca / 2.0lf - zz - cb / (4.0lf * z);
-    if (q1 >= 0.0lf && q2 >= 0.0lf) {
-        double r1 = -z - sqrt(q1), r2 = -z + sqrt(q1), r3 = z - sqrt(q2), r4 = z + sqrt(q2);
-        k.r1 = r1; k.r2 = r2; k.r3 = r3; k.r4 = r4;
-        double r31 = r3 - r1, r32 = r3 - r2, r41 = r4 - r1, r42 = r4 - r2;
-        k.m = r32 * r41 / (r31 * r42);
-        k.rate = 0.5lf * sqrt(r31 * r42);
-        k.k = kerr_k(k.m);
-        double fo, x_end;
+    kreal z = sqrt(max(zz, 0.0));
+    kreal q1 = -ca / 2.0 - zz + cb / (4.0 * z);
+    kreal q2 = -ca / 2.0 - zz - cb / (4.0 * z);
+    if (q1 >= 0.0 && q2 >= 0.0) {
+        kreal r1 = -z - sqrt(q1), r2 = -z + sqrt(q1), r3 = z - sqrt(q2), r4 = z + sqrt(q2);
+        kreal r21 = r2 - r1, r31 = r3 - r1, r32 = r3 - r2, r41 = r4 - r1, r42 = r4 - r2, r43 = r4 - r3;
+        k.r1 = float(r1); k.r2 = float(r2); k.r3 = float(r3); k.r4 = float(r4);
+        k.r21 = float(r21); k.r31 = float(r31); k.r32 = float(r32); k.r41 = float(r41); k.r43 = float(r43);
+        kreal m = r32 * r41 / (r31 * r42), mc = r21 * r43 / (r31 * r42);
+        k.m = float(m);
+        k.mc = float(mc);
+        k.rate = float(0.5 * sqrt(r31 * r42));
         if (r_o >= r4) {
+            // sin^2 = (r - r4) r31 / ((r - r3) r41), cos^2 = r43 (r - r1) / ((r - r3) r41).
             k.kcase = 2;
-            double x2 = (r_o - r4) * r31 / ((r_o - r3) * r41);
-            fo = kerr_f(sqrt(x2), 1.0lf - x2, k.m);
-            double xi2 = r31 / r41;
-            double f_inf = kerr_f(sqrt(xi2), 1.0lf - xi2, k.m);
-            k.captured = false;
-            x_end = f_inf;
-            if (r4 < rp) {
-                double xh2 = (rp - r4) * r31 / ((rp - r3) * r41);
-                double fh = kerr_f(sqrt(xh2), 1.0lf - xh2, k.m);
-                k.captured = s_r < 0.0lf;
-                x_end = k.captured ? -fh : f_inf;
-            }
+            kreal den = 1.0 / ((r_o - r3) * r41);
+            kreal c2 = r43 * (r_o - r1) * den;
+            k.rf_cam = vec3(float(c2), float(mc + m * c2), float((r_o - r4) * r31 * den));
+            k.captured = r4 < rp && s_r < 0.0;
+            den = k.captured ? 1.0 / ((rp - r3) * r41) : 1.0 / r41;
+            c2 = k.captured ? r43 * (rp - r1) * den : r43 * den;
+            k.rf_end = vec3(float(c2), float(mc + m * c2), float((k.captured ? rp - r4 : 1.0) * r31 * den));
         } else {
+            // sin^2 = (r - r2) r31 / ((r - r1) r32), cos^2 = r21 (r3 - r) / ((r - r1) r32).
             k.kcase = 1;
-            double x2 = (r_o - r2) * r31 / ((r_o - r1) * r32);
-            fo = kerr_f(sqrt(x2), 1.0lf - x2, k.m);
-            double xh2 = (rp - r2) * r31 / ((rp - r1) * r32);
-            double fh = kerr_f(sqrt(xh2), 1.0lf - xh2, k.m);
             k.captured = true;
-            x_end = s_r < 0.0lf ? -fh : 2.0lf * k.k - fh;
+            kreal den = 1.0 / ((r_o - r1) * r32);
+            kreal c2 = r21 * (r3 - r_o) * den;
+            k.rf_cam = vec3(float(c2), float(mc + m * c2), float((r_o - r2) * r31 * den));
+            den = 1.0 / ((rp - r1) * r32);
+            c2 = r21 * (r3 - rp) * den;
+            k.rf_end = vec3(float(c2), float(mc + m * c2), float((rp - r2) * r31 * den));
+            k.fold_end = s_r > 0.0;
         }
-        k.x0 = s_r * fo;
-        k.tau_end = (x_end - k.x0) / k.rate;
-    } else if (q1 >= 0.0lf) {
+    } else if (q1 >= 0.0) {
+        // x(r) = (A (r - r1) - B (r - r2)) / (A (r - r1) + B (r - r2)) = cn xi:
+        // cos^2 = x^2, sin^2 = 4 A B (r - r1) (r - r2) / (A (r - r1) + B (r - r2))^2.
         k.kcase = 3;
-        double r1 = -z - sqrt(q1), r2 = -z + sqrt(q1), y = sqrt(-q2);
-        k.r1 = r1; k.r2 = r2;
-        double ba = sqrt((z - r2) * (z - r2) + y * y), bb = sqrt((z - r1) * (z - r1) + y * y);
-        k.ba = ba; k.bb = bb;
-        k.m = ((ba + bb) * (ba + bb) - (r2 - r1) * (r2 - r1)) / (4.0lf * ba * bb);
-        k.rate = sqrt(ba * bb);
-        k.k = kerr_k(k.m);
-        // xi(r) = F(arccos x3(r)), x3 = cn xi, in [0, 2K].
-        double xo = (ba * (r_o - r1) - bb * (r_o - r2)) / (ba * (r_o - r1) + bb * (r_o - r2));
-        double fo = kerr_f(sqrt(max(1.0lf - xo * xo, 0.0lf)), xo * xo, k.m);
-        k.xi_o = xo >= 0.0lf ? fo : 2.0lf * k.k - fo;
-        double xinf = (ba - bb) / (ba + bb);
-        double fi = kerr_f(sqrt(max(1.0lf - xinf * xinf, 0.0lf)), xinf * xinf, k.m);
-        double xi_inf = xinf >= 0.0lf ? fi : 2.0lf * k.k - fi;
-        double xh = (ba * (rp - r1) - bb * (rp - r2)) / (ba * (rp - r1) + bb * (rp - r2));
-        double fh = kerr_f(sqrt(max(1.0lf - xh * xh, 0.0lf)), xh * xh, k.m);
-        double xi_h = xh >= 0.0lf ? fh : 2.0lf * k.k - fh;
-        k.captured = s_r < 0.0lf;
-        k.tau_end = k.captured ? (k.xi_o - xi_h) / k.rate : (xi_inf - k.xi_o) / k.rate;
+        kreal r1 = -z - sqrt(q1), r2 = -z + sqrt(q1), y = sqrt(-q2);
+        kreal r21 = r2 - r1;
+        k.r1 = float(r1); k.r2 = float(r2); k.r21 = float(r21);
+        kreal ba = sqrt((z - r2) * (z - r2) + y * y), bb = sqrt((z - r1) * (z - r1) + y * y);
+        k.ba = float(ba); k.bb = float(bb);
+        kreal i4ab = 1.0 / (4.0 * ba * bb);
+        kreal m = ((ba + bb) * (ba + bb) - r21 * r21) * i4ab, mc = (r21 * r21 - (ba - bb) * (ba - bb)) * i4ab;
+        k.m = float(m);
+        k.mc = float(mc);
+        k.rate = float(sqrt(ba * bb));
+        kreal den = 1.0 / (ba * (r_o - r1) + bb * (r_o - r2));
+        kreal x = (ba * (r_o - r1) - bb * (r_o - r2)) * den;
+        k.rf_cam = vec3(float(x * x), float(mc + m * x * x), float(4.0 * ba * bb * (r_o - r1) * (r_o - r2) * den * den));
+        k.fold_cam = x < 0.0;
+        k.captured = s_r < 0.0;
+        if (k.captured) {
+            den = 1.0 / (ba * (rp - r1) + bb * (rp - r2));
+            x = (ba * (rp - r1) - bb * (rp - r2)) * den;
+            k.rf_end = vec3(float(x * x), float(mc + m * x * x), float(4.0 * ba * bb * (rp - r1) * (rp - r2) * den * den));
+        } else {
+            den = 1.0 / (ba + bb);
+            x = (ba - bb) * den;
+            k.rf_end = vec3(float(x * x), float(mc + m * x * x), float(4.0 * ba * bb * den * den));
+        }
+        k.fold_end = x < 0.0;
     } else {
         // Case 4 (vortical only): no real root outside; an inward ray falls
         // in, an outward one escapes (its Mino time and I_phi by
         // Gauss-Legendre in u = 1/r).
         k.kcase = 4;
-        k.captured = s_r < 0.0lf;
-        double uo = 1.0lf / r_o, tau = 0.0lf, iphi = 0.0lf;
+        k.captured = s_r < 0.0;
+        k.m = 0.0;
+        k.mc = 1.0;
+        k.rate = 1.0;
+        float af = float(a), lf = float(lam), ef = float(eta);
+        float uo = float(1.0 / r_o), tau = 0.0, iphi = 0.0;
         [[dont_unroll]] for (int i = 0; i < 16; ++i) {
-            double x = i < 8 ? -KERR_GL_X[7 - i] : KERR_GL_X[i - 8];
-            double wt = i < 8 ? KERR_GL_W[7 - i] : KERR_GL_W[i - 8];
-            double u = 0.5lf * uo * (x + 1.0lf), ww = 0.5lf * uo * wt;
-            double rt = sqrt(kerr_f_u(u, a, lam, eta));
-            tau += ww / rt;
-            iphi += ww * a * (2.0lf * u - a * lam * u * u) / ((1.0lf - 2.0lf * u + a * a * u * u) * rt);
+            vec2 xw = kerr_gl_node(i);
+            float u = 0.5 * uo * (xw.x + 1.0), ww = 0.5 * uo * xw.y;
+            float rt = inversesqrt(kerr_f_u(u, af, lf, ef));
+            tau += ww * rt;
+            iphi += ww * af * (2.0 * u - af * lf * u * u) / (1.0 - 2.0 * u + af * af * u * u) * rt;
         }
         k.tau_end = tau;
         k.i_phi_end = iphi;
@@ -365,180 +408,266 @@ KerrRadial kerr_radial(double a, double lam, double eta, double r_o, double s_r)
     return k;
 }
 
-double kerr_r_at(KerrRadial k, double tau) {
-    if (k.kcase == 3) {
-        double xi = k.xi_o + (k.s_r > 0.0lf ? k.rate * tau : -k.rate * tau);
-        double cn = kerr_sncndn(xi, k.m).y;
-        return ((k.bb * k.r2 - k.ba * k.r1) + (k.bb * k.r2 + k.ba * k.r1) * cn) / ((k.bb - k.ba) + (k.bb + k.ba) * cn);
+// The radial path in f32, from F at the camera and at the end (R_F of
+// rf_cam, rf_end, computed with the polar motion's in one carlson_rf4).
+void kerr_radial_ends(inout KerrRadial k, float f_cam, float f_end) {
+    k.kk = complete_k(k.mc);
+    k.agm = agm_of(k.mc);
+    k.cam = KerrPoint(sqrt(k.rf_cam.z), k.rf_cam.x, f_cam, k.s_r, 0.0, false);
+    if (k.kcase == 2) {
+        k.x0 = k.s_r * f_cam;
+        k.tau_end = ((k.captured ? -f_end : f_end) - k.x0) / k.rate;
+    } else if (k.kcase == 1) {
+        k.x0 = k.s_r * f_cam;
+        k.tau_end = ((k.s_r < 0.0 ? -f_end : 2.0 * k.kk - f_end) - k.x0) / k.rate;
+    } else if (k.kcase == 3) {
+        k.x0 = k.fold_cam ? 2.0 * k.kk - f_cam : f_cam;
+        // xi_end - xi_o without the 2K that cancels when both fold alike.
+        float d = (k.fold_end ? -f_end : f_end) - (k.fold_cam ? -f_cam : f_cam)
+                + 2.0 * k.kk * (float(k.fold_end) - float(k.fold_cam));
+        k.tau_end = (k.captured ? -d : d) / k.rate;
+        k.cam.sgn = 1.0;
+        k.cam.fold = k.fold_cam;
     }
-    double sn = kerr_sncndn(k.x0 + k.rate * tau, k.m).x;
-    double s2 = sn * sn;
-    if (k.kcase == 1) return (k.r2 * (k.r3 - k.r1) - k.r1 * (k.r3 - k.r2) * s2) / ((k.r3 - k.r1) - (k.r3 - k.r2) * s2);
-    return (k.r4 * (k.r3 - k.r1) - k.r3 * (k.r4 - k.r1) * s2) / ((k.r3 - k.r1) - (k.r4 - k.r1) * s2);
+}
+
+// The point of the path at Mino time tau (its sn, cn and F).
+KerrPoint kerr_radial_point(KerrRadial k, float tau) {
+    if (k.kcase == 3) return kerr_point_2k(k.x0 + k.s_r * k.rate * tau, 1.0, k.agm, k.kk);
+    float x = k.x0 + k.rate * tau;
+    return kerr_point_2k(abs(x), x < 0.0 ? -1.0 : 1.0, k.agm, k.kk);
+}
+
+float kerr_r_of(KerrRadial k, KerrPoint e) {
+    float s2 = e.s * e.s;
+    if (k.kcase == 2) return k.r4 + k.r43 * k.r41 * s2 / max(k.r31 - k.r41 * s2, 1e-30);
+    if (k.kcase == 1) return k.r2 + k.r21 * k.r32 * s2 / (k.r31 - k.r32 * s2);
+    float cn = e.fold ? -sqrt(e.c2) : sqrt(e.c2);
+    return ((k.bb * k.r2 - k.ba * k.r1) + (k.bb * k.r2 + k.ba * k.r1) * cn) / ((k.bb - k.ba) + (k.bb + k.ba) * cn);
 }
 
 // J_h by 16-point Gauss-Legendre along the closed-form r(tau), where the
 // closed form is 0/0 (r_h = r_- next to r2).
-double kerr_j_quadrature(KerrRadial k, double rh, double tau) {
-    double sum = 0.0lf;
+float kerr_j_quadrature(KerrRadial k, float rh, float tau) {
+    float sum = 0.0;
     [[dont_unroll]] for (int i = 0; i < 16; ++i) {
-        double x = i < 8 ? -KERR_GL_X[7 - i] : KERR_GL_X[i - 8];
-        double wt = i < 8 ? KERR_GL_W[7 - i] : KERR_GL_W[i - 8];
-        sum += wt / (kerr_r_at(k, 0.5lf * tau * (x + 1.0lf)) - rh);
+        vec2 xw = kerr_gl_node(i);
+        sum += xw.y / (kerr_r_of(k, kerr_radial_point(k, 0.5 * tau * (xw.x + 1.0))) - rh);
     }
-    return 0.5lf * tau * sum;
+    return 0.5 * tau * sum;
 }
 
-// J_h(tau) = the integral of 1 / (r - r_h) over Mino time.
-double kerr_j(KerrRadial k, double rh, double tau) {
+// Pi at a point of the radial path, with its fold and sign.
+float kerr_pi_signed(float n, KerrPoint e, float pc, KerrRadial k) {
+    float v = kerr_pi(n, e, k.m, k.mc);
+    return e.sgn * (e.fold ? 2.0 * pc - v : v);
+}
+
+// J_h(tau) = the integral of 1 / (r - r_h) over Mino time from the camera
+// (point e0) to Mino time tau (point e1).
+float kerr_j(KerrRadial k, float rh, float tau, KerrPoint e0, KerrPoint e1) {
     if (k.kcase == 2) {
-        double r31 = k.r3 - k.r1, r41 = k.r4 - k.r1, r43 = k.r4 - k.r3;
-        double n = r41 * (k.r3 - rh) / (r31 * (k.r4 - rh));
-        double pp = 0.0lf;
-        [[dont_unroll]] for (int i = 0; i < 2; ++i) {
-            dvec3 e = kerr_sncndn(k.x0 + (i == 0 ? 0.0lf : k.rate * tau), k.m);
-            pp += (i == 0 ? -1.0lf : 1.0lf) * kerr_pi(n, e.x, e.y * e.y, k.m);
+        // tau / r3h - r43 / (rate r4h r3h) (Pi(n; X1) - Pi(n; X0)).
+        float r4h = k.r4 - rh;
+        float n = k.r41 * (k.r3 - rh) / (k.r31 * r4h);
+        if (rh > k.r4) {
+            // The horizon beyond r4 (a captured ray that turns inside it):
+            // n > 1 and the path lies past Pi's pole (the horizon), the
+            // principal value.
+            float dp = e1.sgn * kerr_pi(n, e1, k.m, k.mc) - e0.sgn * kerr_pi(n, e0, k.m, k.mc);
+            return tau / (k.r3 - rh) - k.r43 / (k.rate * r4h * (k.r3 - rh)) * dp;
         }
-        return tau / (k.r3 - rh) - r43 / (k.rate * (k.r4 - rh) * (k.r3 - rh)) * pp;
+        // With Pi = X + (n/3) s^3 R_J and X1 - X0 = rate tau, rearranged so
+        // that nothing cancels where r3 meets the horizon (lambda near
+        // 2 r_h / a, where R(r_h) = (2 r_h - a lambda)^2 vanishes): 0 <= n < 1.
+        float q = 0.0;
+        [[dont_unroll]] for (int i = 0; i < 2; ++i) {
+            KerrPoint e = i == 0 ? e0 : e1;
+            float s2 = e.s * e.s;
+            q += (i == 0 ? -e.sgn : e.sgn) * s2 * e.s * kerr_rj(e.c2, k.mc + k.m * e.c2, 1.0, 1.0 - n * s2);
+        }
+        return tau / r4h - k.r43 * k.r41 / (3.0 * k.rate * k.r31 * r4h * r4h) * q;
     }
+    if (abs(rh - k.r2) < 1e-4 * k.r21) return kerr_j_quadrature(k, rh, tau);
     if (k.kcase == 1) {
-        double r21 = k.r2 - k.r1, r31 = k.r3 - k.r1, r32 = k.r3 - k.r2;
-        if (abs(rh - k.r2) < 1e-6lf * r21) return kerr_j_quadrature(k, rh, tau);
-        double n = r32 * (k.r1 - rh) / (r31 * (k.r2 - rh));
-        double dp = 0.0lf;
-        [[dont_unroll]] for (int i = 0; i < 2; ++i) {
-            double x = k.x0 + (i == 0 ? 0.0lf : k.rate * tau);
-            dp += (i == 0 ? -1.0lf : 1.0lf) * (x < 0.0lf ? -1.0lf : 1.0lf) * kerr_pi_of_xi(n, abs(x), k.m, k.k);
-        }
-        return tau / (k.r1 - rh) - r21 / (k.rate * (k.r2 - rh) * (k.r1 - rh)) * dp;
+        float n = k.r32 * (k.r1 - rh) / (k.r31 * (k.r2 - rh));
+        float pc = e0.fold || e1.fold ? kerr_pi_complete(n, k.kk, k.m, k.mc) : 0.0;
+        float dp = kerr_pi_signed(n, e1, pc, k) - kerr_pi_signed(n, e0, pc, k);
+        return tau / (k.r1 - rh) - k.r21 / (k.rate * (k.r2 - rh) * (k.r1 - rh)) * dp;
     }
     // Case 3.
-    if (abs(rh - k.r2) < 1e-6lf * (k.r2 - k.r1)) return kerr_j_quadrature(k, rh, tau);
-    double a = k.ba, b = k.bb;
-    double dm = b * (rh - k.r2) - a * (rh - k.r1);
-    double dp = b * (rh - k.r2) + a * (rh - k.r1);
-    double al = dp / dm;
-    double c1 = -(b + a) / dp;
-    double c2 = -((b - a) - (b + a) * dm / dp) / dm;
-    double n = al * al / (al * al - 1.0lf);
-    double gam = k.m + al * al / (1.0lf - al * al);
-    double xi1 = k.xi_o + (k.s_r > 0.0lf ? k.rate * tau : -k.rate * tau);
-    double rr[2];
+    float a = k.ba, b = k.bb;
+    float dm = b * (rh - k.r2) - a * (rh - k.r1);
+    float dq = b * (rh - k.r2) + a * (rh - k.r1);
+    float al = dq / dm;
+    float c1 = -(b + a) / dq;
+    float c2 = -((b - a) - (b + a) * dm / dq) / dm;
+    float n = al * al / (al * al - 1.0);
+    if (abs(n - 1.0) < 0.05) return kerr_j_quadrature(k, rh, tau);
+    float gam = k.m + al * al / (1.0 - al * al);
+    float pc = e0.fold || e1.fold ? kerr_pi_complete(n, k.kk, k.m, k.mc) : 0.0;
+    float rr[2];
     [[dont_unroll]] for (int i = 0; i < 2; ++i) {
-        double xi = i == 0 ? k.xi_o : xi1;
-        dvec3 e = kerr_sncndn(xi, k.m);
-        double w = e.x / e.z;
-        double y = 1.0lf + gam * w * w;
-        double rc = y > 0.0lf ? kerr_rc(1.0lf, y) : sqrt(1.0lf / (1.0lf - y)) * kerr_rc(1.0lf - y, -y);
-        rr[i] = (kerr_pi_of_xi(n, xi, k.m, k.k) - al * w * rc) / (1.0lf - al * al);
+        KerrPoint e = i == 0 ? e0 : e1;
+        float w = e.s * inversesqrt(k.mc + k.m * e.c2);
+        rr[i] = (kerr_pi_signed(n, e, pc, k) - al * w * kerr_rc(1.0, 1.0 + gam * w * w)) / (1.0 - al * al);
     }
-    return (c1 * (xi1 - k.xi_o) + c2 * (rr[1] - rr[0])) / k.rate * (k.s_r > 0.0lf ? 1.0lf : -1.0lf);
+    return c1 * tau + k.s_r / k.rate * c2 * (rr[1] - rr[0]);
 }
 
-// I_phi(tau): the integral of a (2 r - a lambda) / Delta over Mino time.
-double kerr_i_phi(KerrRadial k, double a, double lam, double tau) {
-    if (a == 0.0lf) return 0.0lf;
+// I_phi(tau): the integral of a (2 r - a lambda) / Delta over Mino time,
+// e1 the path's point at tau.
+float kerr_i_phi(KerrRadial k, float a, float lam, float tau, KerrPoint e1) {
+    if (a == 0.0) return 0.0;
     if (k.kcase == 4) return k.i_phi_end;
-    double rp = 1.0lf + sqrt(1.0lf - a * a), rm = a * a / rp;
-    double sum = 0.0lf;
+    if (k.kcase == 2 && k.rh.x <= k.r4) {
+        // Case 2, both horizons inside r4 (every ray that escapes): kerr_j's
+        // rearranged form for both at once, R_J sharing its duplication.
+        vec2 r4h = k.r4 - k.rh;
+        vec2 n = k.r41 * (k.r3 - k.rh) / (k.r31 * r4h);
+        vec2 q = vec2(0.0);
+        [[dont_unroll]] for (int i = 0; i < 2; ++i) {
+            KerrPoint e = i == 0 ? k.cam : e1;
+            float s2 = e.s * e.s;
+            q += (i == 0 ? -e.sgn : e.sgn) * s2 * e.s * kerr_rj2(e.c2, k.mc + k.m * e.c2, 1.0, 1.0 - n * s2);
+        }
+        return dot(k.ah, tau / r4h - k.r43 * k.r41 / (3.0 * k.rate * k.r31 * r4h * r4h) * q);
+    }
+    float sum = 0.0;
     // One loop over the two horizons: one copy of kerr_j in the shader.
     [[dont_unroll]] for (int i = 0; i < 2; ++i) {
-        double rh = i == 0 ? rp : rm;
-        double ah = (i == 0 ? 1.0lf : -1.0lf) * (2.0lf * rh - a * lam) / (rp - rm);
-        sum += ah * kerr_j(k, rh, tau);
+        sum += k.ah[i] * kerr_j(k, k.rh[i], tau, k.cam, e1);
     }
-    return a * sum;
+    return sum;
 }
 
-// The polar motion: ordinary (eta > 0) or vortical (eta < 0).
+// The polar motion: ordinary (eta > 0: theta oscillates about the
+// equator) or vortical (eta < 0: in one hemisphere). Ordinary: cos theta =
+// sqrt(u+) cn(psi), psi = w tau + s_th (K - F_o); vortical: cos theta =
+// hemi sqrt(u-) / dn(v), v = v0 + w tau.
 struct KerrAngular {
     bool vortical;
-    double w, m, k;
-    double u_plus, one_m_up, f_o, s_th;  // ordinary
-    double u_minus, v0, hemi;            // vortical
+    float w, m, mc, kk;
+    float u_plus, one_m_up, f_o, s_th;  // ordinary
+    float u_minus, v0, hemi;            // vortical
+    vec3 rf;                            // R_F arguments and sin^2 of F_o (or F of v0)
+    float sign_f;
+    bool complement;                    // rf gives K - F_o (ordinary)
+    float coef;                         // lambda / (w (1 - u+)) (vortical: lambda / w)
+    float psi0;                         // psi at the camera (ordinary)
+    Agm agm;
 };
 
-KerrAngular kerr_angular(double a, double lam, double eta, double c_o, double theta_o, double s_th) {
+KerrAngular kerr_angular(kreal a, kreal lam, kreal eta, kreal c_o, kreal theta_o, float s_th) {
     KerrAngular g;
-    double h = eta + lam * lam - a * a;
-    double s = sqrt(h * h + 4.0lf * a * a * eta);
+    kreal h = eta + lam * lam - a * a;
+    kreal s = sqrt(h * h + 4.0 * a * a * eta);
     g.s_th = s_th;
-    g.vortical = eta < 0.0lf;
+    g.vortical = eta < 0.0;
+    g.u_minus = 0.0;
+    g.v0 = 0.0;
+    g.hemi = 1.0;
+    g.f_o = 0.0;
+    g.complement = false;
     if (!g.vortical) {
-        g.w = sqrt(s);
-        g.u_plus = h >= 0.0lf ? 2.0lf * eta / (h + s) : (s - h) / (2.0lf * a * a);
-        double um = (h + s) / 2.0lf;
-        g.one_m_up = a * a + um > 0.0lf ? lam * lam / (a * a + um) : 1.0lf - g.u_plus;
-        g.m = a * a * g.u_plus / s;
-        g.k = kerr_k(g.m);
-        double so2 = 1.0lf - c_o * c_o;
-        double den = a * a * c_o * c_o + um;
-        double upc = den > 0.0lf ? theta_o * so2 / den : g.u_plus - c_o * c_o;
-        double sin2 = g.u_plus > 0.0lf ? c_o * c_o * s / (g.u_plus * den) : 0.0lf;
-        double cos2 = g.u_plus > 0.0lf ? um * upc / (g.u_plus * den) : 1.0lf;
-        double y = den > 0.0lf ? um / den : 1.0lf;
-        g.f_o = (c_o < 0.0lf ? -1.0lf : 1.0lf) * sqrt(max(sin2, 0.0lf)) * kerr_rf(max(cos2, 0.0lf), y, 1.0lf);
+        g.w = float(sqrt(s));
+        kreal up = h >= 0.0 ? 2.0 * eta / (h + s) : (s - h) / (2.0 * a * a);
+        kreal um = (h + s) / 2.0;
+        g.u_plus = float(up);
+        kreal omu = a * a + um > 0.0 ? lam * lam / (a * a + um) : 1.0 - up;
+        g.one_m_up = float(omu);
+        g.coef = float(lam / (sqrt(s) * omu));
+        kreal m = a * a * up / s, mc = (s - a * a * up) / s;
+        g.m = float(m);
+        g.mc = float(mc);
+        kreal so2 = 1.0 - c_o * c_o;
+        kreal den = a * a * c_o * c_o + um;
+        kreal upc = den > 0.0 ? theta_o * so2 / den : up - c_o * c_o;
+        kreal sin2 = up > 0.0 ? c_o * c_o * s / (up * den) : 0.0;
+        kreal cos2 = up > 0.0 ? um * upc / (up * den) : 1.0;
+        kreal y = den > 0.0 ? um / den : 1.0;
+        sin2 = max(sin2, 0.0);
+        cos2 = max(cos2, 0.0);
+        g.sign_f = c_o < 0.0 ? -1.0 : 1.0;
+        // Near the turning point (the pole, for a camera near the axis)
+        // psi_o = K - F_o is small and everything past the pole hangs on
+        // it: there it comes straight from the complementary amplitude,
+        // K - F(phi) = F(phi*) with sin^2 phi* = cos^2 phi / delta^2
+        // (not from K and F_o, whose f32 difference would keep only
+        // their absolute error).
+        g.complement = c_o >= 0.0 && cos2 < 0.5 * y;
+        g.rf = g.complement ? vec3(float(mc * sin2 / y), float(mc / y), float(cos2 / y))
+                            : vec3(float(cos2), float(y), float(sin2));
     } else {
-        double a2up = (s - h) / 2.0lf, a2um = (-h - s) / 2.0lf;
-        double up = a2up / (a * a), um = a2um / (a * a);
-        g.u_plus = up;
-        g.u_minus = um;
-        g.m = 1.0lf - um / up;
-        g.k = kerr_k(g.m);
-        double sn2 = clamp((c_o * c_o - um) * up / (c_o * c_o * (up - um)), 0.0lf, 1.0lf);
-        double fv = kerr_f(sqrt(sn2), 1.0lf - sn2, g.m);
-        bool away = s_th * (c_o < 0.0lf ? -1.0lf : 1.0lf) < 0.0lf;
-        g.w = sqrt(a2up);
-        g.v0 = away ? fv : -fv;
-        g.hemi = c_o < 0.0lf ? -1.0lf : 1.0lf;
+        kreal a2up = (s - h) / 2.0, a2um = (-h - s) / 2.0;
+        kreal up = a2up / (a * a), um = a2um / (a * a);
+        g.u_plus = float(up);
+        g.u_minus = float(um);
+        kreal m = 1.0 - um / up;
+        g.m = float(m);
+        g.mc = float(um / up);
+        kreal sn2 = clamp((c_o * c_o - um) * up / (c_o * c_o * (up - um)), 0.0, 1.0);
+        g.rf = vec3(float(1.0 - sn2), float(um / up + m * (1.0 - sn2)), float(sn2));
+        bool away = s_th * (c_o < 0.0 ? -1.0 : 1.0) < 0.0;
+        g.w = float(sqrt(a2up));
+        g.coef = float(lam / sqrt(a2up));
+        g.sign_f = away ? 1.0 : -1.0;
+        g.hemi = c_o < 0.0 ? -1.0 : 1.0;
     }
     return g;
 }
 
-double kerr_crossing_tau(KerrAngular g, int n) {
-    double sf = g.s_th * g.f_o;
-    double h = sf > 0.0lf ? 0.0lf : 1.0lf;
-    return (2.0lf * (double(n) + h) * g.k + sf) / g.w;
-}
-
-double kerr_cos_theta(KerrAngular g, double tau) {
-    if (g.vortical) return g.hemi * sqrt(g.u_minus) / kerr_sncndn(g.v0 + g.w * tau, g.m).z;
-    return sqrt(g.u_plus) * kerr_sncndn(g.w * tau + g.s_th * (g.k - g.f_o), g.m).y;
-}
-
-// lambda G_phi(tau) = lambda times the integral of 1 / sin^2 theta.
-double kerr_lambda_g(KerrAngular g, double lam, double tau) {
-    const double PI_D = 3.14159265358979323846lf;
+void kerr_angular_start(inout KerrAngular g, float f) {
+    g.kk = complete_k(g.mc);
+    g.agm = agm_of(g.mc);
     if (g.vortical) {
-        double um = g.u_minus, n = g.m / (1.0lf - um);
-        double comp = kerr_rf(0.0lf, 1.0lf - g.m, 1.0lf) + n / 3.0lf * kerr_rj(0.0lf, 1.0lf - g.m, 1.0lf, 1.0lf - n);
-        double v0 = g.v0, v1 = g.v0 + g.w * tau;
-        if (lam == 0.0lf) return PI_D * (floor((v1 - g.k) / (2.0lf * g.k)) - floor((v0 - g.k) / (2.0lf * g.k)));
-        double pv[2];
-        [[dont_unroll]] for (int i = 0; i < 2; ++i) {
-            double v = i == 0 ? v0 : v1;
-            double j = floor((v + g.k) / (2.0lf * g.k));
-            double vr = v - 2.0lf * j * g.k;
-            dvec3 e = kerr_sncndn(abs(vr), g.m);
-            pv[i] = 2.0lf * j * comp + (vr < 0.0lf ? -1.0lf : 1.0lf) * kerr_pi(n, e.x, e.y * e.y, g.m);
-        }
-        return lam / g.w * ((v1 - v0) + um / (1.0lf - um) * (pv[1] - pv[0]));
+        g.v0 = g.sign_f * f;
+        return;
     }
-    double psi0 = g.s_th * (g.k - g.f_o), psi1 = g.w * tau + psi0;
-    if (lam == 0.0lf) return PI_D * (floor(psi1 / (2.0lf * g.k)) - floor(psi0 / (2.0lf * g.k)));
-    double n = g.u_plus / g.one_m_up;
-    double dp = 0.0lf;
-    [[dont_unroll]] for (int i = 0; i < 2; ++i) {
-        dp += (i == 0 ? -1.0lf : 1.0lf) * kerr_pi_neg_continued(n, i == 0 ? psi0 : psi1, g.m, g.k);
+    float k_minus_f = g.complement ? f : g.kk - g.sign_f * f;
+    g.f_o = g.kk - k_minus_f;
+    g.psi0 = g.s_th * k_minus_f;
+}
+
+float kerr_crossing_tau(KerrAngular g, int n) {
+    float sf = g.s_th * g.f_o;
+    float h = sf > 0.0 ? 0.0 : 1.0;
+    return (2.0 * (float(n) + h) * g.kk + sf) / g.w;
+}
+
+// cos theta and lambda G_phi (lambda times the integral of 1 / sin^2 theta
+// over Mino time) at Mino time tau.
+vec2 kerr_angular_at(KerrAngular g, float lam, float tau) {
+    float u0 = g.vortical ? g.v0 : g.psi0;
+    float u1 = u0 + g.w * tau;
+    KerrPoint e1 = kerr_point_any(u1, g.agm, g.kk);
+    float two_k = 2.0 * g.kk;
+    if (g.vortical) {
+        float cos_t = g.hemi * sqrt(g.u_minus) * inversesqrt(g.mc + g.m * e1.c2);
+        if (abs(lam) < 1e-12) return vec2(cos_t, PI * (floor((u1 - g.kk) / two_k) - floor((u0 - g.kk) / two_k)));
+        float n = g.m / (1.0 - g.u_minus);
+        KerrPoint e0 = kerr_point_any(u0, g.agm, g.kk);
+        float comp = e0.j != 0.0 || e1.j != 0.0 ? kerr_pi_complete(n, g.kk, g.m, g.mc) : 0.0;
+        float p0 = 2.0 * e0.j * comp + e0.sgn * kerr_pi(n, e0, g.m, g.mc);
+        float p1 = 2.0 * e1.j * comp + e1.sgn * kerr_pi(n, e1, g.m, g.mc);
+        return vec2(cos_t, g.coef * ((u1 - u0) + g.u_minus / (1.0 - g.u_minus) * (p1 - p0)));
     }
-    return lam / (g.w * g.one_m_up) * dp;
+    float cn = sqrt(e1.c2) * (mod(e1.j, 2.0) == 0.0 ? 1.0 : -1.0);
+    float cos_t = sqrt(g.u_plus) * cn;
+    if (abs(lam) < 1e-12) return vec2(cos_t, PI * (floor(u1 / two_k) - floor(u0 / two_k)));
+    float n = g.u_plus / g.one_m_up;
+    KerrPoint e0 = kerr_point_any(u0, g.agm, g.kk);
+    float comp = e0.j != 0.0 || e1.j != 0.0 ? kerr_pi_neg_complete(n, g.kk, g.m, g.mc) : 0.0;
+    float p0 = 2.0 * e0.j * comp + e0.sgn * kerr_pi_neg(n, e0, g.m, g.mc);
+    float p1 = 2.0 * e1.j * comp + e1.sgn * kerr_pi_neg(n, e1, g.m, g.mc);
+    return vec2(cos_t, g.coef * (p1 - p0));
 }
 
 // --------------------------------------------------------------- the metric
 
 // The spin a* as its two f32 halves (params.rs): exact to f64.
-double kerr_spin() {
-    return double(P.metric.spin_hi) + double(P.metric.spin_lo);
+kreal kerr_spin() {
+    return kreal(P.metric.spin_hi) + kreal(P.metric.spin_lo);
 }
 
 // The ZAMO is the frame the closed form starts from: the observer's
@@ -554,90 +683,110 @@ const bool METRIC_SHADES_DISK = false;
 
 // BL radius (rs) of a disk hit at world point p: rho^2 = r^2 + a^2.
 float metric_disk_radius(vec3 p) {
-    double rho = double(length(p - P.metric.holes[0].xyz));
-    double a = 0.5lf * double(P.metric.holes[0].w) * kerr_spin();
-    return float(sqrt(max(rho * rho - a * a, 0.0lf)));
+    kreal rho = kreal(length(p - P.metric.holes[0].xyz));
+    kreal a = 0.5 * kreal(P.metric.holes[0].w) * kerr_spin();
+    return float(sqrt(max(rho * rho - a * a, 0.0)));
 }
 
 Hit metric_trace(vec3 x, vec3 d) {
     Hit hit = hit_start(OUT_CAPTURED, x, d);
     vec3 e1 = P.disk.e1, nrm = P.disk.normal, e2 = P.disk.e2;
     vec3 rel = x - P.metric.holes[0].xyz;
-    double a = kerr_spin();
+    kreal a = kerr_spin();
     // Lengths in M = rs / 2: position and direction in the hole's frame.
-    double to_m = 2.0lf / double(P.metric.holes[0].w);
-    dvec3 p = to_m * dvec3(dot(rel, e1), dot(rel, nrm), dot(rel, e2));
-    dvec3 dd = normalize(dvec3(dot(d, e1), dot(d, nrm), dot(d, e2)));
+    kreal to_m = 2.0 / kreal(P.metric.holes[0].w);
+    kvec3 p = to_m * kvec3(dot(rel, e1), dot(rel, nrm), dot(rel, e2));
+    kvec3 dd = normalize(kvec3(dot(d, e1), dot(d, nrm), dot(d, e2)));
+    // On the spin axis phi is undefined and lambda = 0 for every ray: the
+    // camera moves 1e-6 of its distance off the axis, where the near-axis
+    // form (the partner of Pi(-N), N ~ 1 / lambda^2) carries each ray's
+    // sweep of phi past the pole.
+    if (p.x * p.x + p.z * p.z < 1e-12 * dot(p, p)) p.x = 1e-6 * length(p);
     // Boyer-Lindquist position and the ZAMO there (no trigonometry: cos
     // and sin of theta and phi straight from the coordinates).
-    double w = dot(p, p) - a * a;
-    double r = sqrt(0.5lf * (w + sqrt(w * w + 4.0lf * a * a * p.y * p.y)));
-    double c = p.y / r;
-    double s = sqrt(max(1.0lf - c * c, 0.0lf));
-    double rho = sqrt(r * r + a * a);
-    double ph_len = sqrt(p.x * p.x + p.z * p.z);
-    double cp = ph_len > 0.0lf ? p.x / ph_len : 1.0lf, sp = ph_len > 0.0lf ? -p.z / ph_len : 0.0lf;
-    double sig = r * r + a * a * c * c;
-    double delta = r * r - 2.0lf * r + a * a;
-    double big_a = (r * r + a * a) * (r * r + a * a) - a * a * delta * s * s;
-    double alpha = sqrt(sig * delta / big_a), omega = 2.0lf * a * r / big_a, varpi = sqrt(big_a / sig) * s;
-    double rs = sqrt(sig);
-    dvec3 er = dvec3(r * s * cp, rho * c, -r * s * sp) / rs;
-    dvec3 et = dvec3(rho * c * cp, -r * s, -rho * c * sp) / rs;
-    dvec3 ep = dvec3(-sp, 0.0lf, -cp);
-    double dr = dot(dd, er), dt = dot(dd, et), dph = dot(dd, ep);
-    double en = alpha - omega * varpi * dph;
-    if (en <= 0.0lf) return hit;  // E <= 0: cannot come from infinity
-    double l = -varpi * dph;
-    double pth = rs * dt;
-    double qq = pth * pth + c * c * (l * l / (s * s) - a * a * en * en);
-    double lam = l / en, eta = qq / (en * en);
-    double s_r = dr < 0.0lf ? -1.0lf : 1.0lf, s_th = dt < 0.0lf ? -1.0lf : 1.0lf;
-    double theta_o = (pth / en) * (pth / en);
+    kreal w = dot(p, p) - a * a;
+    kreal r = sqrt(0.5 * (w + sqrt(w * w + 4.0 * a * a * p.y * p.y)));
+    kreal c = p.y / r;
+    kreal s = sqrt(max(1.0 - c * c, 0.0));
+    kreal rho = sqrt(r * r + a * a);
+    kreal ph_len = sqrt(p.x * p.x + p.z * p.z);
+    kreal cp = ph_len > 0.0 ? p.x / ph_len : 1.0, sp = ph_len > 0.0 ? -p.z / ph_len : 0.0;
+    kreal sig = r * r + a * a * c * c;
+    kreal delta = r * r - 2.0 * r + a * a;
+    kreal big_a = (r * r + a * a) * (r * r + a * a) - a * a * delta * s * s;
+    kreal alpha = sqrt(sig * delta / big_a), omega = 2.0 * a * r / big_a, varpi = sqrt(big_a / sig) * s;
+    kreal rs = sqrt(sig);
+    kvec3 er = kvec3(r * s * cp, rho * c, -r * s * sp) / rs;
+    kvec3 et = kvec3(rho * c * cp, -r * s, -rho * c * sp) / rs;
+    kvec3 ep = kvec3(-sp, 0.0, -cp);
+    kreal dr = dot(dd, er), dt = dot(dd, et), dph = dot(dd, ep);
+    kreal en = alpha - omega * varpi * dph;
+    if (en <= 0.0) return hit;  // E <= 0: cannot come from infinity
+    kreal l = -varpi * dph;
+    kreal pth = rs * dt;
+    kreal qq = pth * pth + c * c * (l * l / (s * s) - a * a * en * en);
+    kreal lam = l / en, eta = qq / (en * en);
+    float s_r = dr < 0.0 ? -1.0 : 1.0, s_th = dt < 0.0 ? -1.0 : 1.0;
+    kreal theta_o = (pth / en) * (pth / en);
     KerrRadial rad = kerr_radial(a, lam, eta, r, s_r);
     KerrAngular ang = kerr_angular(a, lam, eta, c, theta_o, s_th);
+    // F at the camera and at the path's end, and the polar F_o, in one
+    // loop of Carlson's duplication.
+    vec4 sn2 = vec4(rad.rf_cam.z, rad.rf_end.z, ang.rf.z, 0.0);
+    vec4 f = sqrt(sn2) * carlson_rf4(vec4(rad.rf_cam.x, rad.rf_end.x, ang.rf.x, 1.0),
+                                     vec4(rad.rf_cam.y, rad.rf_end.y, ang.rf.y, 1.0));
+    if (rad.kcase != 4) kerr_radial_ends(rad, f.x, f.y);
+    else kerr_radial_ends(rad, 0.0, 0.0);
+    kerr_angular_start(ang, f.z);
+    float af = float(a), lamf = float(lam);
     // The first crossing of the disk's annulus, if any (an arithmetic
     // progression of Mino times; the radius there in closed form).
     bool on_disk = false;
-    double t = rad.tau_end, rc = 0.0lf;
-    if (DISK_KIND == DISK_THIN && eta > 0.0lf) {
-        double r_in = to_m * double(P.disk.inner), r_out = to_m * double(P.disk.outer);
+    float t = rad.tau_end, rc = 0.0;
+    KerrPoint end = KerrPoint(0.0, 1.0, 0.0, 1.0, 0.0, false);
+    if (DISK_KIND == DISK_THIN && eta > 0.0 && rad.kcase != 4) {
+        float r_in = float(to_m) * P.disk.inner, r_out = float(to_m) * P.disk.outer;
         [[dont_unroll]] for (int n = 0; n < 8; ++n) {
-            double tc = kerr_crossing_tau(ang, n);
+            float tc = kerr_crossing_tau(ang, n);
             if (tc >= rad.tau_end) break;
-            double rn = kerr_r_at(rad, tc);
-            if (rn > 2e4lf) break;
+            KerrPoint e = kerr_radial_point(rad, tc);
+            float rn = kerr_r_of(rad, e);
+            if (rn > 2e4 || rn < 0.0) break;
             if (rn >= r_in && rn <= r_out) {
                 on_disk = true;
                 t = tc;
                 rc = rn;
+                end = e;
                 break;
             }
         }
     }
     if (!on_disk && rad.captured) return hit;
+    if (!on_disk && rad.kcase != 4) end = kerr_radial_point(rad, t);
     // The azimuth there: phi = phi_o + dphi (an equatorial ray, eta = 0 in
     // the plane, keeps theta = pi/2 and lambda G_phi = lambda tau).
-    double dphi = -kerr_i_phi(rad, a, lam, t) - (eta != 0.0lf ? kerr_lambda_g(ang, lam, t) : lam * t);
-    dvec2 cs = kerr_cos_sin(dphi);
-    double cph = cp * cs.x - sp * cs.y, sph = sp * cs.x + cp * cs.y;
+    vec2 ct = eta != 0.0 ? kerr_angular_at(ang, lamf, t) : vec2(0.0, lamf * t);
+    float dphi = -kerr_i_phi(rad, af, lamf, t, end) - ct.y;
+    vec2 cs = cos_sin_precise(dphi);
+    float cpf = float(cp), spf = float(sp);
+    float cph = cpf * cs.x - spf * cs.y, sph = spf * cs.x + cpf * cs.y;
     if (on_disk) {
         // The world point (rho cos phi, 0, -rho sin phi) and the redshift of
         // the prograde Keplerian emitter there, seen by the ZAMO:
         // ((1 - omega lambda) / alpha) r^(3/4) sqrt(r^(3/2) - 3 r^(1/2) + 2a)
         // / (r^(3/2) + a - lambda).
-        double rho_c = sqrt(rc * rc + a * a) / to_m;
+        float rho_c = sqrt(rc * rc + af * af) / float(to_m);
         hit.outcome = OUT_DISK;
-        hit.pos = P.metric.holes[0].xyz + float(rho_c * cph) * e1 - float(rho_c * sph) * e2;
-        double sr = sqrt(rc);
-        hit.g = float(((1.0lf - omega * lam) / alpha) * sqrt(sr * rc) * sqrt(sr * rc - 3.0lf * sr + 2.0lf * a)
-                      / (sr * rc + a - lam));
+        hit.pos = P.metric.holes[0].xyz + rho_c * cph * e1 - rho_c * sph * e2;
+        float sr = sqrt(rc);
+        hit.g = float((1.0 - omega * lam) / alpha) * sqrt(sr * rc) * sqrt(max(sr * rc - 3.0 * sr + 2.0 * af, 0.0))
+              / (sr * rc + af - lamf);
         return hit;
     }
-    double cos_end = eta != 0.0lf ? kerr_cos_theta(ang, t) : 0.0lf;
-    double sin_end = sqrt(max(1.0lf - cos_end * cos_end, 0.0lf));
+    float cos_end = ct.x;
+    float sin_end = sqrt(max(1.0 - cos_end * cos_end, 0.0));
     hit.outcome = OUT_ESCAPED;
-    hit.dir = normalize(float(sin_end * cph) * e1 + float(cos_end) * nrm - float(sin_end * sph) * e2);
+    hit.dir = normalize(sin_end * cph * e1 + cos_end * nrm - sin_end * sph * e2);
     return hit;
 }
 

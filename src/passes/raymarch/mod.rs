@@ -311,13 +311,6 @@ impl RaymarchPipelines {
     /// driver such as lavapipe every branch runs under a mask for every
     /// pixel, so a branch not taken costs as much as one taken.
     pub fn pipeline(&self, variant: Variant) -> Result<Arc<ComputePipeline>> {
-        if variant.path == GpuPath::Kerr && !self.features.spin {
-            return Err(crate::Error::Other(format!(
-                "{} has no 64-bit floats in shaders (shaderFloat64), which a spinning hole's light \
-                 paths need: set spin = 0 or use another device",
-                self.gpu.info.name
-            )));
-        }
         self.cache.get(variant, || {
             let build = if variant.aov {
                 RaymarchBuild::Aov
@@ -328,11 +321,13 @@ impl RaymarchPipelines {
             } else {
                 RaymarchBuild::NoQuad
             };
-            let spirv = shaders::raymarch(variant.path, build).ok_or_else(|| {
-                crate::Error::Other(format!(
-                    "no {build:?} build of the ray march for {variant:?}"
-                ))
-            })?;
+            let spirv = shaders::raymarch(variant.path, build, self.features.kerr_f64).ok_or_else(
+                || {
+                    crate::Error::Other(format!(
+                        "no {build:?} build of the ray march for {variant:?}"
+                    ))
+                },
+            )?;
             ComputePipeline::with_constants(
                 &self.gpu,
                 &variant.name(),

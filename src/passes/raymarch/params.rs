@@ -55,7 +55,7 @@ pub struct MetricParams {
     /// 1 on, 0 off (straight rays).
     pub gravity: f32,
     /// The spin a* of a spinning hole as two f32 halves (hi + lo is the
-    /// f64 value: the GPU's Kerr path runs in f64).
+    /// f64 value: the spinning hole's per-ray constants run in f64).
     pub spin_hi: f32,
     pub spin_lo: f32,
 }
