@@ -63,11 +63,13 @@ fn raymarch_struct_matches(name: &str, rust: &[usize]) {
         GpuPath::Integrated,
         GpuPath::Kerr,
     ];
-    let modules: Vec<&[u8]> = paths
+    let mut modules: Vec<&[u8]> = paths
         .iter()
-        .flat_map(|&p| builds.iter().filter_map(move |&b| raymarch(p, b)))
+        .flat_map(|&p| builds.iter().filter_map(move |&b| raymarch(p, b, true)))
         .collect();
-    assert_eq!(modules.len(), 13, "every metric's builds, the split once");
+    // The spinning hole's build with 32-bit roots.
+    modules.extend(builds.iter().filter_map(|&b| raymarch(GpuPath::Kerr, b, false)));
+    assert_eq!(modules.len(), 16, "every metric's builds, the split once");
     for spirv in modules {
         let glsl = member_offsets(spirv, name);
         let rust: Vec<u32> = rust.iter().map(|&o| o as u32).collect();
