@@ -68,7 +68,11 @@ fn raymarch_struct_matches(name: &str, rust: &[usize]) {
         .flat_map(|&p| builds.iter().filter_map(move |&b| raymarch(p, b, true)))
         .collect();
     // The spinning hole's build with 32-bit roots.
-    modules.extend(builds.iter().filter_map(|&b| raymarch(GpuPath::Kerr, b, false)));
+    modules.extend(
+        builds
+            .iter()
+            .filter_map(|&b| raymarch(GpuPath::Kerr, b, false)),
+    );
     assert_eq!(modules.len(), 16, "every metric's builds, the split once");
     for spirv in modules {
         let glsl = member_offsets(spirv, name);
