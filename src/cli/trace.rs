@@ -1,7 +1,12 @@
 //! `blackhole trace`: photon paths in a hole's equatorial plane for a fan of
 //! impact parameters around the critical one, b_c = (3 sqrt 3 / 2) rs, drawn
 //! from the f64 reference with the horizon, the photon sphere (1.5 rs) and the
-//! innermost stable circular orbit (3 rs). Axes are in units of rs.
+//! innermost stable circular orbit (3 rs). Axes are in units of rs. For a
+//! spinning hole the fan is split: rays passing on the side that turns with
+//! the hole (prograde) and against it (retrograde), each around its own
+//! critical impact parameter, drawn in closed form (Mino time,
+//! `physics::kerr`) in Boyer-Lindquist r and phi, with both circular photon
+//! orbits and both ISCOs.
 
 use std::path::Path;
 
@@ -9,6 +14,7 @@ use glam::DVec3;
 use plotters::prelude::*;
 
 use crate::physics::geodesic::{Hole, Outcome, TraceOptions, trace};
+use crate::physics::kerr::{self, radial::Radial};
 use crate::scene::Scene;
 use crate::{Error, Result};
 
@@ -31,6 +37,13 @@ pub fn run(scene: Option<&str>, out: &Path) -> Result<std::process::ExitCode> {
 pub const FAN: [f64; 14] = [
     0.3, 0.6, 0.85, 0.95, 0.99, 0.999, 1.001, 1.01, 1.05, 1.15, 1.3, 1.6, 2.2, 3.0,
 ];
+
+/// Multiples of each side's critical impact parameter drawn around a
+/// spinning hole (both sides: twice as many paths, so fewer each).
+pub const KERR_FAN: [f64; 7] = [0.6, 0.95, 0.99, 1.01, 1.05, 1.3, 2.0];
+
+/// Mino-time samples along a spinning hole's path.
+const KERR_SAMPLES: u32 = 4000;
 
 /// One drawn path: impact parameter (units of rs), captured or not, and the
 /// polylines (units of rs) that lie inside the plot.
@@ -109,6 +122,51 @@ pub fn photon_paths(scene: &Scene, extent: f64) -> Vec<PhotonPath> {
         .collect()
 }
 
+/// Equatorial paths around a hole spinning at `a` (a* != 0), coming in
+/// from the left along +x at heights y0 (units of rs): lambda = -y0, eta =
+/// 0, r and phi in closed form from Mino time (forward in time: phi = phi0
+/// + I_phi + lambda tau).
+pub fn kerr_photon_paths(a: f64, extent: f64) -> Vec<PhotonPath> {
+    let start = 2.0 * 4.0 * extent; // in M = rs / 2
+    let mut out = Vec::new();
+    for prograde in [true, false] {
+        let lambda_c =
+            kerr::critical_lambda_eta(kerr::r_photon_equatorial(a.abs(), prograde), a.abs()).0
+                * a.signum();
+        for k in KERR_FAN {
+            let lambda = k * lambda_c;
+            let y0 = -lambda;
+            let (r_o, phi_o) = ((start * start + y0 * y0).sqrt(), y0.atan2(-start));
+            let rad = Radial::new(a, lambda, 0.0, r_o, -1.0);
+            // Stopped just outside the horizon, where Boyer-Lindquist phi
+            // winds without end; a point only every 0.02 rs (the plot's
+            // resolution).
+            let mut points: Vec<(f64, f64)> = Vec::new();
+            for i in 0..=KERR_SAMPLES {
+                let tau = rad.tau_end * f64::from(i) / f64::from(KERR_SAMPLES) * (1.0 - 1e-9);
+                let r = rad.r_at(tau);
+                if !r.is_finite() || r < 1.01 * rad.r_plus {
+                    break;
+                }
+                let phi = phi_o + rad.i_phi(tau) + lambda * tau;
+                let p = (0.5 * r * phi.cos(), 0.5 * r * phi.sin());
+                let far = points
+                    .last()
+                    .is_none_or(|q: &(f64, f64)| (p.0 - q.0).hypot(p.1 - q.1) > 0.02);
+                if far && p.0.is_finite() && p.1.is_finite() {
+                    points.push(p);
+                }
+            }
+            out.push(PhotonPath {
+                b: 0.5 * lambda.abs(),
+                captured: rad.captured,
+                pieces: clip_polyline(&points, extent),
+            });
+        }
+    }
+    out
+}
+
 fn circle(r: f64) -> Vec<(f64, f64)> {
     (0..=360)
         .map(|i| {
@@ -118,10 +176,111 @@ fn circle(r: f64) -> Vec<(f64, f64)> {
         .collect()
 }
 
+/// A circle drawn dashed on the plot, with its legend.
+struct Ring {
+    r: f64,
+    label: String,
+    color: RGBColor,
+    dash: (u32, u32),
+    width: u32,
+}
+
+/// What one plot shows: the hole's circles, its horizon and the paths.
+struct Plot {
+    caption: String,
+    rings: Vec<Ring>,
+    horizon: f64,
+    horizon_label: String,
+    paths: Vec<PhotonPath>,
+    captured_label: String,
+    escaped_label: String,
+}
+
+fn plot_of(scene: &Scene, extent: f64) -> Plot {
+    let grey = RGBColor(120, 120, 120);
+    let orange = RGBColor(230, 120, 0);
+    let spin = scene.black_holes.first().map_or(0.0, |h| h.spin);
+    if spin == 0.0 {
+        return Plot {
+            caption: "Photon paths around a Schwarzschild hole (b in units of rs)".into(),
+            rings: vec![
+                Ring {
+                    r: 3.0,
+                    label: "ISCO, 3 rs".into(),
+                    color: grey,
+                    dash: (6, 4),
+                    width: 1,
+                },
+                Ring {
+                    r: 1.5,
+                    label: "photon sphere, 1.5 rs".into(),
+                    color: orange,
+                    dash: (4, 3),
+                    width: 2,
+                },
+            ],
+            horizon: 1.0,
+            horizon_label: "horizon, rs".into(),
+            paths: photon_paths(scene, extent),
+            captured_label: "captured (b < b_c = 2.598 rs)".into(),
+            escaped_label: "escapes (b > b_c)".into(),
+        };
+    }
+    let a = spin.abs();
+    let purple = RGBColor(140, 60, 170);
+    let half = |r: f64| 0.5 * r;
+    let (pro, retro) = (
+        half(kerr::r_photon_equatorial(a, true)),
+        half(kerr::r_photon_equatorial(a, false)),
+    );
+    let (isco_pro, isco_retro) = (half(kerr::r_isco(a)), half(kerr::r_isco(-a)));
+    let horizon = half(kerr::frame::r_horizon(spin));
+    Plot {
+        caption: format!(
+            "Equatorial photon paths around a hole spinning at a* = {spin} (Boyer-Lindquist r, phi; rs)"
+        ),
+        rings: vec![
+            Ring {
+                r: isco_pro,
+                label: format!("ISCO prograde {isco_pro:.3} rs, retrograde {isco_retro:.3} rs"),
+                color: grey,
+                dash: (6, 4),
+                width: 1,
+            },
+            Ring {
+                r: isco_retro,
+                label: String::new(),
+                color: grey,
+                dash: (6, 4),
+                width: 1,
+            },
+            Ring {
+                r: pro,
+                label: format!("prograde photon orbit, {pro:.3} rs"),
+                color: orange,
+                dash: (4, 3),
+                width: 2,
+            },
+            Ring {
+                r: retro,
+                label: format!("retrograde photon orbit, {retro:.3} rs"),
+                color: purple,
+                dash: (4, 3),
+                width: 2,
+            },
+        ],
+        horizon,
+        horizon_label: format!("horizon, {horizon:.3} rs"),
+        paths: kerr_photon_paths(spin, extent),
+        captured_label: "captured (|lambda| inside its side's critical value)".into(),
+        escaped_label: "escapes (prograde below, retrograde above)".into(),
+    }
+}
+
 /// Draws the plot as SVG text.
 pub fn render_svg(scene: &Scene) -> Result<String> {
     let extent = 10.0;
-    let paths = photon_paths(scene, extent);
+    let plot = plot_of(scene, extent);
     let mut svg = String::new();
     {
         let plot_err =
@@ -129,10 +288,7 @@ pub fn render_svg(scene: &Scene) -> Result<String> {
         let root = SVGBackend::with_string(&mut svg, (800, 800)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| plot_err(&e))?;
         let mut chart = ChartBuilder::on(&root)
-            .caption(
-                "Photon paths around a Schwarzschild hole (b in units of rs)",
-                ("sans-serif", 20),
-            )
+            .caption(&plot.caption, ("sans-serif", 18))
             .margin(15)
             .x_label_area_size(40)
             .y_label_area_size(50)
@@ -146,37 +302,34 @@ pub fn render_svg(scene: &Scene) -> Result<String> {
             .draw()
             .map_err(|e| plot_err(&e))?;
 
-        let grey = RGBColor(120, 120, 120);
         chart
-            .draw_series(DashedLineSeries::new(
-                circle(3.0),
-                6,
-                4,
-                grey.stroke_width(1),
-            ))
+            .draw_series(std::iter::once(Polygon::new(
+                circle(plot.horizon),
+                BLACK.filled(),
+            )))
             .map_err(|e| plot_err(&e))?
-            .label("ISCO, 3 rs")
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], grey));
-        let orange = RGBColor(230, 120, 0);
-        chart
-            .draw_series(DashedLineSeries::new(
-                circle(1.5),
-                4,
-                3,
-                orange.stroke_width(2),
-            ))
-            .map_err(|e| plot_err(&e))?
-            .label("photon sphere, 1.5 rs")
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], orange));
-        chart
-            .draw_series(std::iter::once(Polygon::new(circle(1.0), BLACK.filled())))
-            .map_err(|e| plot_err(&e))?
-            .label("horizon, rs")
+            .label(plot.horizon_label.as_str())
             .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], BLACK.filled()));
 
+        for ring in &plot.rings {
+            let color = ring.color;
+            let series = chart
+                .draw_series(DashedLineSeries::new(
+                    circle(ring.r),
+                    ring.dash.0,
+                    ring.dash.1,
+                    color.stroke_width(ring.width),
+                ))
+                .map_err(|e| plot_err(&e))?;
+            if !ring.label.is_empty() {
+                series
+                    .label(ring.label.as_str())
+                    .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], color));
+            }
+        }
         let (red, blue) = (RGBColor(200, 30, 30), RGBColor(30, 80, 200));
         let mut labelled = (false, false);
-        for p in &paths {
+        for p in &plot.paths {
             let color = if p.captured { red } else { blue };
             let series = chart
                 .draw_series(
@@ -188,12 +341,12 @@ pub fn render_svg(scene: &Scene) -> Result<String> {
             if p.captured && !labelled.0 {
                 labelled.0 = true;
                 series
-                    .label("captured (b < b_c = 2.598 rs)")
+                    .label(plot.captured_label.as_str())
                     .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], red));
             } else if !p.captured && !labelled.1 {
                 labelled.1 = true;
                 series
-                    .label("escapes (b > b_c)")
+                    .label(plot.escaped_label.as_str())
                     .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], blue));
             }
         }
@@ -240,5 +393,28 @@ mod tests {
         }
         let svg = render_svg(&Scene::default()).expect("SVG");
         assert!(svg.starts_with("<svg") && svg.contains("photon sphere"));
+    }
+
+    #[test]
+    fn a_spinning_hole_splits_the_fan_at_each_sides_critical_value() {
+        for spin in [0.9, -0.6] {
+            let paths = kerr_photon_paths(spin, 10.0);
+            assert_eq!(paths.len(), 2 * KERR_FAN.len());
+            for (i, p) in paths.iter().enumerate() {
+                let k = KERR_FAN[i % KERR_FAN.len()];
+                assert_eq!(p.captured, k < 1.0, "spin {spin}, path {i}, k {k}");
+                assert!(!p.pieces.is_empty(), "spin {spin}, path {i}");
+            }
+            // Prograde rays pass closer: their critical value is smaller.
+            let (pro, retro) = (
+                paths[0].b / KERR_FAN[0],
+                paths[KERR_FAN.len()].b / KERR_FAN[0],
+            );
+            assert!(pro < 2.598 && retro > 2.598, "{pro} {retro}");
+        }
+        let mut scene = Scene::default();
+        scene.black_holes[0].spin = 0.9;
+        let svg = render_svg(&scene).expect("SVG");
+        assert!(svg.contains("prograde photon orbit") && svg.contains("retrograde photon orbit"));
     }
 }

@@ -266,7 +266,7 @@ struct KerrRadial {
     // and of the path's end (infinity or the horizon), and their folds.
     vec3 rf_cam, rf_end;
     bool fold_cam, fold_end;
-    KerrPoint cam;
+    KerrPoint cam, end;  // the camera's point and the path's end (infinity or the horizon)
     Agm agm;
 };
 
@@ -414,12 +414,15 @@ void kerr_radial_ends(inout KerrRadial k, float f_cam, float f_end) {
     k.kk = complete_k(k.mc);
     k.agm = agm_of(k.mc);
     k.cam = KerrPoint(sqrt(k.rf_cam.z), k.rf_cam.x, f_cam, k.s_r, 0.0, false);
+    k.end = KerrPoint(sqrt(k.rf_end.z), k.rf_end.x, f_end, 1.0, 0.0, k.fold_end);
     if (k.kcase == 2) {
         k.x0 = k.s_r * f_cam;
         k.tau_end = ((k.captured ? -f_end : f_end) - k.x0) / k.rate;
+        k.end.sgn = k.captured ? -1.0 : 1.0;
     } else if (k.kcase == 1) {
         k.x0 = k.s_r * f_cam;
         k.tau_end = ((k.s_r < 0.0 ? -f_end : 2.0 * k.kk - f_end) - k.x0) / k.rate;
+        k.end.sgn = k.s_r < 0.0 ? -1.0 : 1.0;
     } else if (k.kcase == 3) {
         k.x0 = k.fold_cam ? 2.0 * k.kk - f_cam : f_cam;
         // xi_end - xi_o without the 2K that cancels when both fold alike.
@@ -555,6 +558,8 @@ struct KerrAngular {
     bool complement;                    // rf gives K - F_o (ordinary)
     float coef;                         // lambda / (w (1 - u+)) (vortical: lambda / w)
     float psi0;                         // psi at the camera (ordinary)
+    vec2 star;                          // sin^2, cos^2 of the camera's point (K - F_o; vortical F)
+    KerrPoint cam;                      // the camera's point of psi (v)
     Agm agm;
 };
 
@@ -595,9 +600,9 @@ KerrAngular kerr_angular(kreal a, kreal lam, kreal eta, kreal c_o, kreal theta_o
         // K - F(phi) = F(phi*) with sin^2 phi* = cos^2 phi / delta^2
         // (not from K and F_o, whose f32 difference would keep only
         // their absolute error).
-        g.complement = c_o >= 0.0 && cos2 < 0.5 * y;
-        g.rf = g.complement ? vec3(float(mc * sin2 / y), float(mc / y), float(cos2 / y))
-                            : vec3(float(cos2), float(y), float(sin2));
+        g.complement = cos2 < 0.5 * y;
+        g.star = vec2(float(cos2 / y), float(mc * sin2 / y));
+        g.rf = g.complement ? vec3(g.star.y, float(mc / y), g.star.x) : vec3(float(cos2), float(y), float(sin2));
     } else {
         kreal a2up = (s - h) / 2.0, a2um = (-h - s) / 2.0;
         kreal up = a2up / (a * a), um = a2um / (a * a);
@@ -608,6 +613,7 @@ KerrAngular kerr_angular(kreal a, kreal lam, kreal eta, kreal c_o, kreal theta_o
         g.mc = float(um / up);
         kreal sn2 = clamp((c_o * c_o - um) * up / (c_o * c_o * (up - um)), 0.0, 1.0);
         g.rf = vec3(float(1.0 - sn2), float(um / up + m * (1.0 - sn2)), float(sn2));
+        g.star = vec2(float(sn2), float(1.0 - sn2));
         bool away = s_th * (c_o < 0.0 ? -1.0 : 1.0) < 0.0;
         g.w = float(sqrt(a2up));
         g.coef = float(lam / sqrt(a2up));
@@ -617,16 +623,26 @@ KerrAngular kerr_angular(kreal a, kreal lam, kreal eta, kreal c_o, kreal theta_o
     return g;
 }
 
+// From R_F's value: K, the means, and the camera's point (no Jacobi
+// function needed: its amplitude is known).
 void kerr_angular_start(inout KerrAngular g, float f) {
     g.kk = complete_k(g.mc);
     g.agm = agm_of(g.mc);
+    g.cam = KerrPoint(sqrt(g.star.x), g.star.y, f, g.sign_f, 0.0, false);
     if (g.vortical) {
         g.v0 = g.sign_f * f;
         return;
     }
-    float k_minus_f = g.complement ? f : g.kk - g.sign_f * f;
-    g.f_o = g.kk - k_minus_f;
-    g.psi0 = g.s_th * k_minus_f;
+    // G = K - F_o's magnitude; psi_o = s_th G above the equator (the
+    // north turning point at psi = 0), s_th (2K - G) below (the south one
+    // at 2K), the point taken from the nearer turning point.
+    float big_g = g.complement ? f : g.kk - f;
+    g.cam.f = big_g;
+    g.f_o = g.sign_f * (g.kk - big_g);
+    bool north = g.sign_f > 0.0;
+    g.psi0 = g.s_th * (north ? big_g : 2.0 * g.kk - big_g);
+    g.cam.sgn = north ? g.s_th : -g.s_th;
+    g.cam.j = north ? 0.0 : g.s_th;
 }
 
 float kerr_crossing_tau(KerrAngular g, int n) {
@@ -646,7 +662,7 @@ vec2 kerr_angular_at(KerrAngular g, float lam, float tau) {
         float cos_t = g.hemi * sqrt(g.u_minus) * inversesqrt(g.mc + g.m * e1.c2);
         if (abs(lam) < 1e-12) return vec2(cos_t, PI * (floor((u1 - g.kk) / two_k) - floor((u0 - g.kk) / two_k)));
         float n = g.m / (1.0 - g.u_minus);
-        KerrPoint e0 = kerr_point_any(u0, g.agm, g.kk);
+        KerrPoint e0 = g.cam;
         float comp = e0.j != 0.0 || e1.j != 0.0 ? kerr_pi_complete(n, g.kk, g.m, g.mc) : 0.0;
         float p0 = 2.0 * e0.j * comp + e0.sgn * kerr_pi(n, e0, g.m, g.mc);
         float p1 = 2.0 * e1.j * comp + e1.sgn * kerr_pi(n, e1, g.m, g.mc);
@@ -656,7 +672,7 @@ vec2 kerr_angular_at(KerrAngular g, float lam, float tau) {
     float cos_t = sqrt(g.u_plus) * cn;
     if (abs(lam) < 1e-12) return vec2(cos_t, PI * (floor(u1 / two_k) - floor(u0 / two_k)));
     float n = g.u_plus / g.one_m_up;
-    KerrPoint e0 = kerr_point_any(u0, g.agm, g.kk);
+    KerrPoint e0 = g.cam;
     float comp = e0.j != 0.0 || e1.j != 0.0 ? kerr_pi_neg_complete(n, g.kk, g.m, g.mc) : 0.0;
     float p0 = 2.0 * e0.j * comp + e0.sgn * kerr_pi_neg(n, e0, g.m, g.mc);
     float p1 = 2.0 * e1.j * comp + e1.sgn * kerr_pi_neg(n, e1, g.m, g.mc);
@@ -762,7 +778,7 @@ Hit metric_trace(vec3 x, vec3 d) {
         }
     }
     if (!on_disk && rad.captured) return hit;
-    if (!on_disk && rad.kcase != 4) end = kerr_radial_point(rad, t);
+    if (!on_disk) end = rad.end;
     // The azimuth there: phi = phi_o + dphi (an equatorial ray, eta = 0 in
     // the plane, keeps theta = pi/2 and lambda G_phi = lambda tau).
     vec2 ct = eta != 0.0 ? kerr_angular_at(ang, lamf, t) : vec2(0.0, lamf * t);
