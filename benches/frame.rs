@@ -1,7 +1,9 @@
 //! `cargo bench`: wall time of whole offscreen frames (ray march, bloom,
 //! composite, readback) for fixed scenes and sizes on the Vulkan device the
-//! renderer picks, and the cost of one f64 light path, closed form against
-//! the step-by-step integrator. GPU time per pass: `blackhole profile`.
+//! renderer picks (the default view with spin 0.9 beside the default rows),
+//! and the cost of one f64 light path, closed form against the step-by-step
+//! integrator and the spinning hole's closed form. GPU time per pass:
+//! `blackhole profile`.
 
 use std::hint::black_box;
 use std::time::Duration;
@@ -26,13 +28,14 @@ fn frames(c: &mut Criterion) {
     group
         .sample_size(10)
         .measurement_time(Duration::from_secs(5));
-    let cases: [(&str, &[(u32, u32)]); 3] = [
+    let cases: [(&str, &[(u32, u32)]); 4] = [
         (
             "default",
             &[(320, 180), (640, 360), (1280, 720), (1920, 1080)],
         ),
         ("doppler", &[(1280, 720)]),
         ("interstellar", &[(320, 180), (640, 360)]),
+        ("gargantua", &[(640, 360)]),
     ];
     for (name, sizes) in cases {
         let scene = match Scene::load(name) {
@@ -48,6 +51,18 @@ fn frames(c: &mut Criterion) {
                 })
             });
         }
+    }
+    // The default view around a spinning hole, against the default rows.
+    let mut spinning = Scene::default();
+    spinning.black_holes[0].spin = 0.9;
+    for (w, h) in [(640, 360), (1280, 720)] {
+        group.bench_function(format!("default spin 0.9/{w}x{h}"), |b| {
+            b.iter(|| {
+                renderer
+                    .render(&spinning, w, h, OutputKind::Ldr)
+                    .unwrap_or_else(|e| panic!("spin 0.9 {w}x{h}: {e}"))
+            })
+        });
     }
     group.finish();
 }
@@ -85,6 +100,21 @@ fn light_paths(c: &mut Criterion) {
                 }
             })
         });
+    group.bench_function("spinning hole closed form (a* = 0.9)", |b| {
+        b.iter(|| {
+            for d in &dirs {
+                black_box(blackhole::physics::kerr::trace_zamo(
+                    x0,
+                    *d,
+                    0.9,
+                    Some(blackhole::physics::kerr::KerrDisk {
+                        inner: 3.0,
+                        outer: 12.0,
+                    }),
+                ));
+            }
+        })
+    });
     group.finish();
 }
 

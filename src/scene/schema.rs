@@ -131,10 +131,11 @@ pub struct Disk {
 #[serde(rename_all = "kebab-case")]
 pub enum TemperatureProfile {
     /// T^4 ~ r^-3 (1 - sqrt(r_in / r)), the Newtonian limit (peak at 49/36 r_in).
-    #[default]
     Newtonian,
     /// Page & Thorne (1974): the relativistic Novikov-Thorne flux for the
-    /// hole's spin, zero at its ISCO whatever inner_radius says.
+    /// hole's spin, zero at its ISCO whatever inner_radius says (the
+    /// default for every spin, 0 included).
+    #[default]
     PageThorne,
 }
 
@@ -153,7 +154,7 @@ impl Default for Disk {
             normal: [0.0, 1.0, 0.0],
             inner_radius: 3.0,
             outer_radius: 12.0,
-            temperature_profile: TemperatureProfile::Newtonian,
+            temperature_profile: TemperatureProfile::PageThorne,
             brightness: 1.2,
             temperature_k: 6000.0,
             structure: 0.8,

@@ -231,8 +231,8 @@ fn flag(on: bool) -> f32 {
 }
 
 /// r⁻³ (1 - sqrt(r_in / r)) at the Novikov-Thorne peak, the shader's normaliser.
-/// The Page-Thorne part of the disk's block, and the profile's peak as the
-/// normaliser (Newtonian: zeros).
+/// The Page-Thorne part of the disk's block (Newtonian: zeros); its peak,
+/// the normaliser, is set with the rest in `disk`.
 fn page_thorne(scene: &Scene) -> DiskParams {
     use crate::scene::TemperatureProfile;
     if scene.disk.temperature_profile != TemperatureProfile::PageThorne {
@@ -245,7 +245,6 @@ fn page_thorne(scene: &Scene) -> DiskParams {
         pt_spin: a as f32,
         pt_roots: [pt.x0, pt.roots[0], pt.roots[1], pt.roots[2]].map(|x| x as f32),
         pt_coef: [pt.coef[0], pt.coef[1], pt.coef[2], 1.5 * a].map(|x| x as f32),
-        nt_peak: crate::physics::kerr::page_thorne_peak(a).1 as f32,
         ..DiskParams::default()
     }
 }
@@ -337,7 +336,15 @@ fn disk(scene: &Scene) -> DiskParams {
         brightness: d.brightness as f32,
         beaming: flag(scene.physics.beaming),
         peak_temperature: d.temperature_k as f32,
-        nt_peak: nt_profile_at_peak(d.inner_radius) as f32,
+        // The profile's own peak: T / T_peak is 1 at the hottest ring.
+        nt_peak: if d.temperature_profile == crate::scene::TemperatureProfile::PageThorne {
+            crate::physics::kerr::page_thorne_peak(
+                scene.black_holes.first().map_or(0.0, |h| h.spin),
+            )
+            .1 as f32
+        } else {
+            nt_profile_at_peak(d.inner_radius) as f32
+        },
         doppler: flag(scene.physics.doppler),
         redshift: flag(scene.physics.gravitational_redshift),
         opacity: d.opacity as f32,
@@ -399,5 +406,52 @@ fn plane(scene: &Scene) -> PlaneParams {
         spacing: gp.spacing as f32,
         axis: v3(axis.normalize()),
         half_size: gp.size as f32,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::TemperatureProfile;
+
+    /// The shader's T^4 (disk.glsl: Page-Thorne f / r in M, Newtonian
+    /// r^-3 (1 - sqrt(r_in / r)) in rs) over the block's normaliser peaks at
+    /// exactly 1 for either profile: the hottest ring has temperature_k.
+    #[test]
+    fn the_hottest_ring_of_either_profile_has_the_peak_temperature() {
+        for (profile, spin) in [
+            (TemperatureProfile::PageThorne, 0.0),
+            (TemperatureProfile::PageThorne, 0.9),
+            (TemperatureProfile::PageThorne, -0.5),
+            (TemperatureProfile::Newtonian, 0.0),
+        ] {
+            let mut scene = Scene::default();
+            scene.black_holes[0].spin = spin;
+            scene.disk.temperature_profile = profile;
+            let peak = f64::from(
+                RaymarchParams::new(&scene, &FrameSpec::new(8, 8))
+                    .disk
+                    .nt_peak,
+            );
+            let r_in = scene.disk.inner_radius;
+            let t4 = |r_rs: f64| match profile {
+                TemperatureProfile::PageThorne => {
+                    let r = 2.0 * r_rs;
+                    if r <= crate::physics::kerr::r_isco(spin) {
+                        0.0
+                    } else {
+                        crate::physics::kerr::page_thorne_f(r, spin) / r
+                    }
+                }
+                TemperatureProfile::Newtonian => r_rs.powi(-3) * (1.0 - (r_in / r_rs).sqrt()),
+            };
+            let best = (1..20_000)
+                .map(|i| t4(0.5 + 0.001 * f64::from(i)) / peak)
+                .fold(0.0, f64::max);
+            assert!(
+                (best - 1.0).abs() < 1e-4,
+                "{profile:?} spin {spin}: peak T^4 ratio {best}"
+            );
+        }
     }
 }
