@@ -8,8 +8,23 @@ use glam::DVec3;
 use crate::scene::Camera;
 
 /// Closest the wheel brings the camera to the hole: just outside the photon
-/// sphere (1.5 rs), unless the user asks to go further in.
+/// sphere (1.5 rs), unless the user asks to go further in. For a spinning
+/// hole the same margin outside its outer (retrograde) circular photon orbit.
 pub const MIN_DISTANCE_RS: f64 = 1.6;
+
+/// The wheel's nearest distance (units of rs) to a hole spinning at `spin`:
+/// 1.6/1.5 of the outer photon orbit (Boyer-Lindquist r, as a distance
+/// sqrt(r^2 + a^2)); inside allowed, 1.01 of the horizon's.
+pub fn min_distance_rs(spin: f64, allow_inside: bool) -> f64 {
+    use crate::physics::kerr;
+    let a = spin.abs().min(0.9999);
+    let dist = |r_m: f64| 0.5 * (r_m * r_m + a * a).sqrt();
+    if allow_inside {
+        1.01 * dist(kerr::frame::r_horizon(a))
+    } else {
+        MIN_DISTANCE_RS / 1.5 * dist(kerr::r_photon_equatorial(a, false))
+    }
+}
 
 /// Highest elevation of the orbit (radians, just short of the pole): with
 /// +y as up, a camera exactly on the axis would have no defined right.
@@ -76,13 +91,10 @@ impl Orbit {
     }
 
     /// Wheel: `steps` notches, positive zooms in; never closer than
-    /// [`MIN_DISTANCE_RS`] times `rs` to the target unless allowed.
-    pub fn zoom(&mut self, steps: f64, rs: f64) {
-        let min = if self.allow_inside {
-            1.01 * rs
-        } else {
-            MIN_DISTANCE_RS * rs
-        };
+    /// [`min_distance_rs`] times `rs` to the target (a hole spinning at
+    /// `spin`).
+    pub fn zoom(&mut self, steps: f64, rs: f64, spin: f64) {
+        let min = min_distance_rs(spin, self.allow_inside) * rs;
         self.distance = (self.distance * 0.9f64.powf(steps)).clamp(min, 1e5 * rs);
     }
 
@@ -148,10 +160,28 @@ mod tests {
     #[test]
     fn the_wheel_stops_outside_the_photon_sphere() {
         let mut o = Orbit::from_camera(&Camera::default());
-        o.zoom(500.0, 1.0);
+        o.zoom(500.0, 1.0, 0.0);
         assert!((o.distance - MIN_DISTANCE_RS).abs() < 1e-12);
         o.allow_inside = true;
-        o.zoom(500.0, 1.0);
+        o.zoom(500.0, 1.0, 0.0);
         assert!(o.distance < 1.5 && o.distance > 1.0);
+    }
+
+    #[test]
+    fn the_wheel_follows_the_spins_photon_orbits_and_horizon() {
+        // a* = 0.998 (Bardeen 1972): retrograde photon orbit r = 3.9982 M,
+        // horizon 1.0632 M; distances sqrt(r^2 + a^2) / 2 in rs.
+        let mut o = Orbit::from_camera(&Camera::default());
+        o.zoom(500.0, 1.0, 0.998);
+        let outer = 0.5 * (3.9982f64.powi(2) + 0.998f64.powi(2)).sqrt();
+        assert!(
+            (o.distance - 1.6 / 1.5 * outer).abs() < 1e-3,
+            "{}",
+            o.distance
+        );
+        o.allow_inside = true;
+        o.zoom(500.0, 1.0, -0.998);
+        let horizon = 0.5 * (1.0632f64.powi(2) + 0.998f64.powi(2)).sqrt();
+        assert!((o.distance - 1.01 * horizon).abs() < 1e-3, "{}", o.distance);
     }
 }

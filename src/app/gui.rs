@@ -14,6 +14,7 @@ use egui::{Color32, DragValue, Ui};
 
 use crate::frame::FrameTimings;
 use crate::graph::{Graph, ImageHandle, Mips};
+use crate::physics::kerr;
 use crate::physics::observer::ObserverKind;
 use crate::render::Overlay;
 use crate::scene::{DiskKind, PRESETS, Scene, SkyKind, Tonemap, VolumeColor};
@@ -236,7 +237,7 @@ impl Gui {
         });
         ui.checkbox(
             &mut self.inside,
-            "let the wheel go inside the photon sphere (1.5 rs)",
+            "let the wheel go inside the photon orbits (1.5 rs at spin 0)",
         );
         ui.separator();
         ui.horizontal(|ui| {
@@ -375,15 +376,30 @@ fn camera_and_holes(ui: &mut Ui, s: &mut Scene) {
             );
         }
         let mut remove = None;
+        let inner = &mut s.disk.inner_radius;
         for (i, h) in s.black_holes.iter_mut().enumerate() {
             ui.label(format!("black_hole[{i}]"));
             vec3(ui, "position", &mut h.position, 0.05);
             num(ui, "rs", &mut h.rs, 0.01);
+            let before = h.spin;
             ui.add(egui::Slider::new(&mut h.spin, -0.9999..=0.9999).text("spin a*"));
+            if i == 0 {
+                follow_isco(inner, h.rs, before, h.spin);
+            }
             if h.spin != 0.0 {
+                let a = h.spin.abs();
+                let half = |r: f64| 0.5 * h.rs * r;
+                ui.label(format!(
+                    "horizon {:.3} rs; circular photon orbits {:.3} rs (prograde), {:.3} rs \
+                     (retrograde); ISCO {:.3} rs (the disk's turning direction)",
+                    half(kerr::frame::r_horizon(a)),
+                    half(kerr::r_photon_equatorial(a, true)),
+                    half(kerr::r_photon_equatorial(a, false)),
+                    half(kerr::r_isco(h.spin)),
+                ));
                 ui.label(
-                    "spinning (Kerr): light paths exact, in closed form (Mino time, 64-bit); \
-                     one hole only, thin disk, slow on a CPU driver",
+                    "spinning (Kerr): light paths exact, in closed form (Mino time; 32-bit, \
+                     the roots in 64-bit where the device has them); one hole only, thin disk",
                 );
             }
             if i > 0 && ui.button("remove").clicked() {
@@ -400,6 +416,16 @@ fn camera_and_holes(ui: &mut Ui, s: &mut Scene) {
             });
         }
     });
+}
+
+/// A disk whose inner edge is at the ISCO of spin `before` stays at the
+/// ISCO of spin `after` (the slider moves the edge with it); any other
+/// inner radius is left as the user set it.
+pub fn follow_isco(inner: &mut f64, rs: f64, before: f64, after: f64) {
+    let isco = |a: f64| 0.5 * rs * kerr::r_isco(a);
+    if before != after && (*inner - isco(before)).abs() <= 1e-9 * inner.abs() {
+        *inner = isco(after);
+    }
 }
 
 /// `[disk]` and `[physics]`.
@@ -582,5 +608,24 @@ impl Drop for Gui {
                 .device
                 .destroy_command_pool(self.command_pool, None);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::follow_isco;
+
+    #[test]
+    fn a_disk_at_the_isco_follows_the_spin_and_another_stays() {
+        // Bardeen, Press & Teukolsky: ISCO 6 M at a* = 0, 1.2370 M at 0.998
+        // (prograde), 8.9944 M at -0.998 (retrograde); rs = 2 M.
+        let mut inner = 3.0;
+        follow_isco(&mut inner, 1.0, 0.0, 0.998);
+        assert!((inner - 0.5 * 1.2370).abs() < 1e-4, "{inner}");
+        follow_isco(&mut inner, 1.0, 0.998, -0.998);
+        assert!((inner - 0.5 * 8.9944).abs() < 1e-3, "{inner}");
+        let mut fixed = 5.0;
+        follow_isco(&mut fixed, 1.0, 0.0, 0.9);
+        assert_eq!(fixed, 5.0);
     }
 }
