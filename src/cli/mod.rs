@@ -18,7 +18,7 @@ use crate::{Error, Renderer, Scene};
 #[command(
     name = "blackhole",
     version,
-    about = "A Schwarzschild black-hole renderer on Vulkan"
+    about = "A black-hole renderer on Vulkan: exact light paths around a non-rotating or spinning hole"
 )]
 pub struct Cli {
     #[command(subcommand)]
