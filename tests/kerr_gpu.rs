@@ -164,7 +164,7 @@ fn gpu_kerr_aov_matches_the_f64_closed_form() {
     if !r.features().kerr_f64 {
         common::skipped(
             "gpu_kerr_aov_matches_the_f64_closed_form",
-            "the device has no 64-bit floats in shaders",
+            "no 64-bit per-ray constants (the device lacks shaderFloat64, or BLACKHOLE_NO_F64=1)",
         );
         return;
     }
