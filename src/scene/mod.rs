@@ -110,6 +110,25 @@ mod tests {
         }
     }
 
+    /// `inner_radius` omitted is `"isco"`, as the built-in default scene
+    /// writes it: the spin's ISCO (Bardeen, Press & Teukolsky: 1.2370 M at
+    /// a* = 0.998, 8.9944 M at -0.998; 3 rs at 0), and a number stays.
+    #[test]
+    fn an_omitted_inner_radius_is_the_spins_isco() {
+        for (src, want) in [
+            ("[[black_hole]]\nspin = 0.998\n", 0.5 * 1.2370),
+            ("[[black_hole]]\nspin = -0.998\n", 0.5 * 8.9944),
+            ("", 3.0),
+            (
+                "[[black_hole]]\nspin = 0.998\n[disk]\ninner_radius = 2.5\n",
+                2.5,
+            ),
+        ] {
+            let r = Scene::from_toml(src, "s.toml").unwrap().disk.inner_radius;
+            assert!((r - want).abs() < 1e-4, "{src:?}: {r}");
+        }
+    }
+
     #[test]
     fn camera_convention_matches_design() {
         let f = Camera::default().frame();

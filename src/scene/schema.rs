@@ -90,15 +90,17 @@ pub struct Disk {
     pub normal: [f64; 3],
     /// A number (rs), or `"isco"`: the innermost stable circular orbit of
     /// the (first) hole's spin, prograde for a* >= 0 and retrograde below
-    /// (3 rs at spin 0), resolved when the scene is read.
-    #[serde(deserialize_with = "number_or_isco")]
+    /// (3 rs at spin 0), resolved when the scene is read. Omitted in a scene
+    /// file it is `"isco"`, as in the built-in default scene (`Disk::default`
+    /// holds its value at spin 0).
+    #[serde(default = "isco_mark", deserialize_with = "number_or_isco")]
     pub inner_radius: f64,
     pub outer_radius: f64,
-    /// `"newtonian"` (the default for now) or `"page-thorne"`.
+    /// `"page-thorne"` (the default) or `"newtonian"`.
     pub temperature_profile: TemperatureProfile,
     /// Emission scale (luminance of the hottest ring, seen unshifted).
     pub brightness: f64,
-    /// Temperature of the hottest ring, kelvin (Novikov-Thorne profile).
+    /// Temperature of the hottest ring, kelvin.
     pub temperature_k: f64,
     /// Thin disk: contrast of its filaments and clumps (0: smooth, the
     /// bare Novikov-Thorne disk; 1: fully structured). Each element turns
@@ -412,6 +414,7 @@ pub struct Scene {
     pub camera: Camera,
     #[serde(rename = "black_hole")]
     pub black_holes: Vec<BlackHole>,
+    #[serde(default = "disk_in_a_file")]
     pub disk: Disk,
     pub sky: Sky,
     #[serde(rename = "grid_plane")]
@@ -459,6 +462,19 @@ pub const MAX_HOLES: usize = 8;
 /// ([`crate::Scene::from_toml`]): a NaN whose payload no TOML number has (a
 /// scene's `nan` is the canonical NaN), so it cannot be written by hand.
 pub const ISCO_MARK: u64 = 0x7ff8_0000_1c0d_0001;
+
+fn isco_mark() -> f64 {
+    f64::from_bits(ISCO_MARK)
+}
+
+/// A scene file without `[disk]`: the default disk, its inner edge at the
+/// spin's ISCO.
+fn disk_in_a_file() -> Disk {
+    Disk {
+        inner_radius: isco_mark(),
+        ..Disk::default()
+    }
+}
 
 fn number_or_isco<'de, D: serde::Deserializer<'de>>(d: D) -> Result<f64, D::Error> {
     #[derive(Deserialize)]
