@@ -292,7 +292,9 @@ fn the_window_survives_200_random_resizes_and_a_minimise() {
         }
     }
     xdotool(&["windowsize", "--sync", &id, "640", "360"]);
-    let (code, out, err) = finish(child, &id, 30);
+    // It kept presenting through the walk (how many frames depends on how
+    // busy the machine is: 24 seen on a loaded two-core machine, 60 idle).
+    let (code, out, err) = finish(child, &id, 10);
     assert_clean(code, &out, &err);
     let img = image::open(&shot).expect("a screenshot").to_rgb8();
     assert_eq!(img.dimensions(), (640, 360));

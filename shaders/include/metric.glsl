@@ -13,7 +13,10 @@
 //       direction and lapse; static_frame.glsl), so each ray of a camera
 //       can start from its own place;
 //   float metric_disk_radius(vec3 p)  the radius (rs) of a disk point at
-//       world point p (a spinning hole's Boyer-Lindquist r).
+//       world point p (a spinning hole's Boyer-Lindquist r);
+//   float metric_gas_g(float r, float lambda)  the shift, as the camera
+//       sees it, of the volumetric gas's Keplerian orbit at radius r toward
+//       a photon of angular momentum lambda (volume.glsl declares it).
 //
 // The disk, the volumetric gas and the sky take what metric_trace returns
 // and know nothing of orbit planes.

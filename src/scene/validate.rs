@@ -247,13 +247,6 @@ impl Scene {
     fn validate_disk(&self) -> Check {
         let d = &self.disk;
         let key = |k| [Key("disk"), Key(k)];
-        let spinning = self.black_holes.first().is_some_and(|h| h.spin != 0.0);
-        rule(
-            d.kind != DiskKind::Volumetric || !spinning || !self.physics.gravity,
-            &key("kind"),
-            "\"volumetric\"",
-            "a volumetric disk around a spinning hole is not drawn yet: use kind = \"thin\" or spin = 0",
-        )?;
         direction(&key("normal"), &d.normal)?;
         non_negative(&key("inner_radius"), d.inner_radius)?;
         rule(

@@ -20,14 +20,8 @@ NON_ROTATING_METRIC(true)
 
 // The volumetric slab around one disk-plane crossing of a closed-form path:
 // the angles where |height| < H, from the crossing's radius and the tilt of
-// the orbit plane (widened for the path's curvature). Four chords between
-// five points of the exact path carry VOLUME_SAMPLES samples spread evenly
-// along them, offset by the pixel's jitter: a fixed count, because on a CPU
-// driver a SIMD group runs as many samples as its longest ray would take, and
-// the jitter turns the coarser spacing into fine grain that the window's
-// accumulation and `render --spp` average away.
-const int VOLUME_SAMPLES = 12;
-
+// the orbit plane (widened for the path's curvature), sampled along five
+// points of the exact path (volume_chords).
 void volume_crossing(LightPath path, float phi_j, float tilt, vec2 inside, vec3 c, vec3 e1,
                      vec3 e2, float rs, float lambda, inout Hit hit) {
     float H = P.volume.half_height;
@@ -46,26 +40,7 @@ void volume_crossing(LightPath path, float phi_j, float tilt, vec2 inside, vec3 
         float u = max(path_u(path, phi), 1e-6);
         pts[k] = c + (rs / u) * (cos(phi) * e1 + sin(phi) * e2);
     }
-    vec4 len = vec4(length(pts[1] - pts[0]), length(pts[2] - pts[1]),
-                    length(pts[3] - pts[2]), length(pts[4] - pts[3]));
-    vec4 ends = vec4(len.x, len.x + len.y, len.x + len.y + len.z, len.x + len.y + len.z + len.w);
-    float ds = ends.w / float(VOLUME_SAMPLES);
-    for (int s = 0; s < VOLUME_SAMPLES; ++s) {
-        float t = (float(s) + volume_jitter) * ds;
-        // Which chord holds t, and where along it (selects, not dynamic
-        // indexing: an index a masked-off lane computes must stay in range).
-        bvec3 past = greaterThanEqual(vec3(t), ends.xyz);
-        float start = past.z ? ends.z : past.y ? ends.y : past.x ? ends.x : 0.0;
-        float l = past.z ? len.w : past.y ? len.z : past.x ? len.y : len.x;
-        vec3 p0 = past.z ? pts[3] : past.y ? pts[2] : past.x ? pts[1] : pts[0];
-        vec3 p1 = past.z ? pts[4] : past.y ? pts[3] : past.x ? pts[2] : pts[1];
-        vec3 p = mix(p0, p1, clamp((t - start) / max(l, 1e-9), 0.0, 1.0));
-        float r;
-        float dens = volume_density(p, r);
-        vec3 emit = volume_emission(r, rs, lambda);
-        hit.glow += hit.trans * emit * (dens * P.volume.lit * ds);
-        hit.trans *= exp(-dens * 0.8 * ds);
-    }
+    volume_chords(pts, lambda, hit.glow, hit.trans);
 }
 
 const int VOLUME_CROSSINGS = 4;

@@ -33,14 +33,20 @@ StaticFrame static_frame_at(vec3 x, bool gravity) {
     return f;
 }
 
-// metric_static_frame and metric_disk_radius (metric.glsl) of a metric
-// whose holes do not spin; `gravity` false: directions only.
+// metric_static_frame, metric_disk_radius and metric_gas_g (metric.glsl) of
+// a metric whose holes do not spin; `gravity` false: directions only (the
+// gas's shift stays the first hole's Keplerian one, as the thin disk's).
+// Expanded after disk.glsl.
 #define NON_ROTATING_METRIC(gravity) \
     StaticFrame metric_static_frame(vec3 origin) { \
         return static_frame_at(origin, gravity); \
     } \
     float metric_disk_radius(vec3 p) { \
         return length(p - P.metric.holes[0].xyz); \
+    } \
+    float metric_gas_g(float r, float lambda) { \
+        float rs = P.metric.holes[0].w; \
+        return emitter_g(1.0 - 1.5 * rs / r, keplerian_omega(rs, r), lambda, 1e-4) * observer_g; \
     }
 
 #endif

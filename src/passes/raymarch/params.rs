@@ -105,8 +105,8 @@ pub struct DiskParams {
     pub speed: f32,
     /// 0: Newtonian profile; 1: Page-Thorne with the constants below.
     pub profile: f32,
-    /// The hole's spin (Page-Thorne).
-    pub pt_spin: f32,
+    /// The hole's spin a* (Page-Thorne; the emitter's lapse, disk.glsl).
+    pub spin: f32,
     /// Page-Thorne: sqrt(ISCO / M) and the roots of x^3 - 3x + 2a.
     pub pt_roots: [f32; 4],
     /// Page-Thorne: each root's log coefficient, then 1.5 a.
@@ -242,7 +242,6 @@ fn page_thorne(scene: &Scene) -> DiskParams {
     let pt = crate::physics::kerr::PageThorne::new(a);
     DiskParams {
         profile: 1.0,
-        pt_spin: a as f32,
         pt_roots: [pt.x0, pt.roots[0], pt.roots[1], pt.roots[2]].map(|x| x as f32),
         pt_coef: [pt.coef[0], pt.coef[1], pt.coef[2], 1.5 * a].map(|x| x as f32),
         ..DiskParams::default()
@@ -349,6 +348,7 @@ fn disk(scene: &Scene) -> DiskParams {
         redshift: flag(scene.physics.gravitational_redshift),
         opacity: d.opacity as f32,
         speed: d.speed as f32,
+        spin: scene.black_holes.first().map_or(0.0, |h| h.spin) as f32,
         ..page_thorne(scene)
     }
 }
