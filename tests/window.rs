@@ -173,15 +173,71 @@ fn window_renders_resizes_survives_unmap_and_takes_a_screenshot() {
         (800, 450),
         "the screenshot follows the resize"
     );
-    // The view right of the panel: the hole's shadow sits just above the
-    // centre (the disk's near side crosses the centre), with bright disk
-    // light and stars around it.
-    let shadow = luma(&img, 390, 180, 20, 16);
-    let around = luma(&img, 560, 200, 200, 50);
+    // The view right of the panel (folded to a bar: the window started
+    // narrow): the hole's shadow sits just above the view's centre (the
+    // disk's near side crosses the centre), with bright disk light and
+    // stars around it.
+    let (x0, w, h) = view_of(&err);
+    assert!(
+        x0 > 0 && x0 < 60 && w == 800 - x0 && h == 450,
+        "view {x0} {w} {h}"
+    );
+    let cx = x0 + w / 2;
+    let shadow = luma(&img, cx - 10, 180, 20, 16);
+    let around = luma(&img, cx + 160, 200, 200, 50);
     assert!(shadow < 0.05, "the shadow is not dark: {shadow}");
     assert!(
         around > shadow + 0.05,
         "no structure around the hole: {around}"
+    );
+}
+
+/// The view's first column, width and height, as the window said at exit.
+fn view_of(err: &str) -> (u32, u32, u32) {
+    let line = err
+        .lines()
+        .find_map(|l| l.strip_prefix("view at x "))
+        .unwrap_or_else(|| panic!("no view line:\n{err}"));
+    let n: Vec<u32> = line.split(' ').filter_map(|t| t.parse().ok()).collect();
+    assert_eq!(n.len(), 3, "view line: {line}");
+    (n[0], n[1], n[2])
+}
+
+#[test]
+fn a_small_window_shows_the_hole_in_the_middle_of_its_free_view() {
+    let _one = one_at_a_time();
+    let dir = scratch();
+    let shot = path_in(&dir, "small.png");
+    let mut child = spawn_window(&shot);
+    let id = window_id(&mut child);
+    let (code, out, err) = finish(child, &id, 2);
+    assert_clean(code, &out, &err);
+    let img = image::open(&shot).expect("PNG").to_rgb8();
+    assert_eq!(img.dimensions(), (640, 360));
+    // At 640 pixels wide the panel starts folded to a thin bar at the left:
+    // the view keeps more than nine tenths of the window.
+    let (x0, w, h) = view_of(&err);
+    assert!(
+        x0 > 0 && w > 576 && x0 + w == 640 && h == 360,
+        "view {x0} {w} {h}"
+    );
+    // The bar is the panel's grey, not the picture.
+    let bar = luma(&img, 2, 100, x0 - 4, 160);
+    assert!(bar > 0.05, "no panel bar at the left: {bar}");
+    // The shadow at the centre of the free view (just above: the disk's
+    // near side crosses the middle), bright disk light left and right of it
+    // at the same height (the view is centred, not cut by the panel).
+    let cx = x0 + w / 2;
+    let shadow = luma(&img, cx - 8, 140, 16, 12);
+    assert!(
+        shadow < 0.05,
+        "no shadow at the view's centre x {cx}: {shadow}"
+    );
+    let left = luma(&img, x0 + 10, 182, 40, 24);
+    let right = luma(&img, 640 - 50, 182, 40, 24);
+    assert!(
+        left > 0.1 && right > 0.1,
+        "the disk is not across the whole view: left {left}, right {right}"
     );
 }
 

@@ -22,13 +22,20 @@ use crate::stars::SkyFrame;
 use crate::vk::{Access, Gpu};
 use crate::{Error, Result};
 
+/// Windows narrower than this (in points) start with the panel folded to a
+/// bar, so the view keeps most of the window.
+const COLLAPSED_BELOW: f64 = 960.0;
+/// The folded panel's width, points.
+const BAR_WIDTH: f32 = 26.0;
+
 /// What the panel shows besides the scene.
 #[derive(Clone, Debug, Default)]
 pub struct Stats {
     pub fps: f64,
     pub timings: FrameTimings,
     pub render_size: (u32, u32),
-    pub window_size: (u32, u32),
+    /// The view: the part of the window the panel leaves free.
+    pub view_size: (u32, u32),
     pub samples: u32,
     pub device: String,
 }
@@ -54,6 +61,11 @@ pub struct Gui {
     pub path: String,
     pub message: String,
     pub visible: bool,
+    /// The panel folded to a thin bar (at start when the window is narrow).
+    pub collapsed: bool,
+    /// Physical pixels the panel covers at the window's left edge (0 when
+    /// hidden): the view is drawn right of it.
+    pub panel_px: u32,
     pub auto_scale: bool,
     /// Let the wheel take the camera inside the photon sphere.
     pub inside: bool,
@@ -121,6 +133,9 @@ impl Gui {
             path: "scene.toml".into(),
             message: String::new(),
             visible: true,
+            collapsed: f64::from(window.inner_size().width) / window.scale_factor()
+                < COLLAPSED_BELOW,
+            panel_px: 0,
             auto_scale: false,
             inside: false,
             scale: 1.0,
@@ -159,17 +174,47 @@ impl Gui {
         let input = self.state.take_egui_input(window);
         let mut actions = PanelActions::default();
         let ctx = self.ctx.clone();
+        // The panel's right edge, in points (0: hidden).
+        let mut edge = 0.0f32;
         let output = ctx.run_ui(input, |ui| {
-            if self.visible {
-                egui::Panel::left("parameters")
+            if !self.visible {
+                return;
+            }
+            if self.collapsed {
+                let bar = egui::Panel::left("bar")
+                    .resizable(false)
+                    .exact_size(BAR_WIDTH)
+                    .show(ui, |ui| {
+                        if ui
+                            .button("»")
+                            .on_hover_text("show the panel (H hides it)")
+                            .clicked()
+                        {
+                            self.collapsed = false;
+                        }
+                    });
+                edge = bar.response.rect.max.x;
+            } else {
+                let panel = egui::Panel::left("parameters")
                     .default_size(300.0)
                     .show(ui, |ui| {
+                        if ui
+                            .button("«")
+                            .on_hover_text("fold the panel to a bar (H hides it)")
+                            .clicked()
+                        {
+                            self.collapsed = true;
+                        }
                         egui::ScrollArea::vertical().show(ui, |ui| {
                             self.panel(ui, applied, stats, &mut actions);
                         });
                     });
+                edge = panel.response.rect.max.x;
             }
         });
+        // Rounded down: the view's first column sits under the panel's
+        // edge, so no column of the window is left undrawn.
+        self.panel_px = (edge * output.pixels_per_point).floor().max(0.0) as u32;
         self.state
             .handle_platform_output(window, output.platform_output);
         for (id, deltas) in &output.textures_delta.set {
@@ -208,11 +253,11 @@ impl Gui {
             stats.fps, stats.device, stats.timings.frame_ms
         ));
         ui.label(format!(
-            "render {}x{} of window {}x{}  |  {} samples",
+            "render {}x{} of view {}x{}  |  {} samples",
             stats.render_size.0,
             stats.render_size.1,
-            stats.window_size.0,
-            stats.window_size.1,
+            stats.view_size.0,
+            stats.view_size.1,
             stats.samples
         ));
         egui::CollapsingHeader::new("GPU time per pass").show(ui, |ui| {

@@ -119,6 +119,11 @@ struct Running {
     dragging: Option<MouseButton>,
     cursor: Option<(f64, f64)>,
     presented: u64,
+    /// The view's place in the window: first column, width, height (the
+    /// part the panel leaves free).
+    view: (u32, u32, u32),
+    /// The ray march's size last frame.
+    render_size: (u32, u32),
     wants_f12: bool,
     started: Instant,
     /// Keys held down (to ignore duplicate presses).
@@ -203,6 +208,8 @@ impl App {
             dragging: None,
             cursor: None,
             presented: 0,
+            view: (0, size.width.max(1), size.height.max(1)),
+            render_size: (1, 1),
             wants_f12: false,
             keys_down: Vec::new(),
             started: Instant::now(),
@@ -225,6 +232,11 @@ impl App {
                 "presented {} frames in {secs:.1} s ({:.1} frames a second)",
                 r.presented,
                 r.presented as f64 / secs.max(1e-9)
+            );
+            // Where the view was (tests find its centre by this line).
+            eprintln!(
+                "view at x {} width {} height {}",
+                r.view.0, r.view.1, r.view.2
             );
             if let Some(path) = self.options.screenshot.clone() {
                 if r.presented > 0 {
@@ -403,17 +415,13 @@ impl Running {
             return Ok(());
         };
         let (w, h) = (image.desc.width, image.desc.height);
-        let render_size = (
-            ((f64::from(w) * self.scale).round() as u32).clamp(1, w),
-            ((f64::from(h) * self.scale).round() as u32).clamp(1, h),
-        );
 
         // The panel edits a draft; apply it only when it validates.
         let stats = Stats {
             fps: self.fps,
             timings: self.timings.clone(),
-            render_size,
-            window_size: (w, h),
+            render_size: self.render_size,
+            view_size: (self.view.1, self.view.2),
             samples: self.samples,
             device: renderer.device_name().to_owned(),
         };
@@ -422,6 +430,16 @@ impl Running {
         self.gui.auto_scale = self.auto_scale;
         self.gui.scale = self.scale;
         let actions = self.gui.run(&self.window, &self.scene, &stats)?;
+        // The view is the part of the window right of the panel: the ray
+        // march renders that part, centred there, at the render scale.
+        let view_x = self.gui.panel_px.min(w - 1);
+        let view_w = w - view_x;
+        self.view = (view_x, view_w, h);
+        let render_size = (
+            ((f64::from(view_w) * self.scale).round() as u32).clamp(1, view_w),
+            ((f64::from(h) * self.scale).round() as u32).clamp(1, h),
+        );
+        self.render_size = render_size;
         self.orbit.allow_inside = self.gui.inside;
         let previous = self.scene.clone();
         if let Some(s) = actions.load {
@@ -471,6 +489,7 @@ impl Running {
             &drawn,
             ViewOptions {
                 render_size,
+                view_x,
                 jitter: (jitter.0 as f32, jitter.1 as f32),
                 sample: Some(self.samples),
             },
@@ -549,13 +568,15 @@ impl Running {
         }
     }
 
-    /// F12: the view at full quality (full resolution, no panel) as PNG.
+    /// F12: the view at full quality (the free view's full resolution, no
+    /// panel, the scene's projection) as PNG.
     fn save_view(&mut self) -> Result<()> {
         let renderer = self
             .renderer
             .as_mut()
             .ok_or_else(|| Error::Other("renderer already shut down".into()))?;
-        let (w, h) = (self.swapchain.extent.width, self.swapchain.extent.height);
+        // The view's size (the part of the window the panel leaves free).
+        let (_, w, h) = self.view;
         renderer.wait_idle()?;
         let mut scene = self.scene.clone();
         scene.time = self.time;

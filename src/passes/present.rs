@@ -9,8 +9,10 @@ use ash::vk;
 use crate::graph::{Graph, ImageHandle, Mips};
 use crate::vk::Access;
 
-/// Adds a blit of `ldr` (mip 0) onto `target` (the acquired swapchain image).
-pub fn add_blit_to(graph: &mut Graph<'_>, ldr: &ImageHandle, target: &mut ImageHandle) {
+/// Adds a blit of `ldr` (mip 0) onto `target` (the acquired swapchain image),
+/// filling its columns from `x0` to its right edge (the window's panel covers
+/// the columns left of `x0`).
+pub fn add_blit_to(graph: &mut Graph<'_>, ldr: &ImageHandle, target: &mut ImageHandle, x0: u32) {
     let mut pass = graph.add_pass("present blit");
     let src = pass.read(ldr, Access::TransferRead, Mips::one(0));
     let dst = pass.write(target, Access::TransferWrite, Mips::one(0));
@@ -34,7 +36,11 @@ pub fn add_blit_to(graph: &mut Graph<'_>, ldr: &ImageHandle, target: &mut ImageH
             ],
             dst_subresource: layers,
             dst_offsets: [
-                vk::Offset3D::default(),
+                vk::Offset3D {
+                    x: x0.min(dst.desc.width.saturating_sub(1)) as i32,
+                    y: 0,
+                    z: 0,
+                },
                 corner(dst.desc.width, dst.desc.height),
             ],
         };

@@ -17,6 +17,9 @@ use crate::{Error, Result};
 pub struct ViewOptions {
     /// Size of the ray march (the window's size times the render scale).
     pub render_size: (u32, u32),
+    /// The view's first column on the swapchain image: the frame is drawn
+    /// over the rest of its width (the panel covers the columns left of it).
+    pub view_x: u32,
     /// Sub-pixel jitter of the ray march, in pixels (0, 0 = pixel centres).
     pub jitter: (f32, f32),
     /// Which sample of an unchanged view this frame is; `None` turns the
@@ -108,7 +111,7 @@ impl Renderer {
             Access::Acquired,
             Some(Access::Present),
         );
-        passes::present::add_blit_to(&mut g, &ldr, &mut swap);
+        passes::present::add_blit_to(&mut g, &ldr, &mut swap, view.view_x.min(out_w - 1));
         if let Some(o) = target.overlay {
             o.add_passes(&mut g, &mut swap);
         }
