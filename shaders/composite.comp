@@ -105,15 +105,18 @@ uint hash(uvec2 p) {
     return (w >> 22u) ^ w;
 }
 
-// Exposure, saturation, tone map, sRGB and dither of pixel px, stored.
-void finish(ivec2 px, vec3 c) {
+// Exposure, saturation, tone map, sRGB and dither of pixel px, stored with
+// the ray march's alpha (0 where a pixel has no ray: a fisheye's corners,
+// kept black).
+void finish(ivec2 px, vec3 c, float alpha) {
+    c *= alpha;
     c *= AUTO_EXPOSURE ? pc.exposure * metered.exposure : pc.exposure;
     if (SATURATE) {
         float l = luminance(c);
         c = max(l + pc.saturation * (c - l), 0.0);
     }
 #ifdef HDR_OUTPUT
-    imageStore(ldr, px, vec4(storable(c), 1.0));
+    imageStore(ldr, px, vec4(storable(c), alpha));
     return;
 #endif
     vec3 t = TONEMAP == TONEMAP_HUE_PRESERVING ? hue_preserving(c)
@@ -126,7 +129,7 @@ void finish(ivec2 px, vec3 c) {
     uint hb = hash(uvec2(px));
     float n = float((hb & 0xffffu) + (hb >> 16u)) * (1.0 / 65536.0) - 1.0;
     s += n * pc.dither / 255.0;
-    imageStore(ldr, px, vec4(clamp(s, 0.0, 1.0), 1.0));
+    imageStore(ldr, px, vec4(clamp(s * alpha, 0.0, 1.0), alpha));
 }
 
 void main() {
@@ -150,7 +153,8 @@ void main() {
                 vec2 f = f0 + 0.25 * vec2(dx, dy);
                 vec3 b = mix(mix(b00, b10, f.x), mix(b01, b11, f.x), f.y);
                 ivec2 px = base + ivec2(dx, dy);
-                finish(px, texelFetch(hdr, px, 0).rgb + pc.bloom_strength * b);
+                vec4 h = texelFetch(hdr, px, 0);
+                finish(px, h.rgb + pc.bloom_strength * b, h.a);
             }
         }
         return;
@@ -160,9 +164,10 @@ void main() {
     vec2 uv = (vec2(px) + 0.5) / vec2(pc.width, pc.height);
     // The ray march may run at a fraction of the output size (the window's
     // render scale): then it is upscaled here, bilinearly.
-    vec3 c = UPSCALE ? textureLod(hdr, uv, 0.0).rgb : texelFetch(hdr, px, 0).rgb;
+    vec4 h = UPSCALE ? textureLod(hdr, uv, 0.0) : texelFetch(hdr, px, 0);
+    vec3 c = h.rgb;
     if (BLOOM) {
         c += pc.bloom_strength * textureLod(bloom, uv, 0.0).rgb;
     }
-    finish(px, c);
+    finish(px, c, h.a);
 }

@@ -126,7 +126,10 @@ void main() {
     // by the sub-pixel jitter, zero for a single offscreen frame) so the
     // window's accumulation averages the grain away.
     volume_jitter = hash33(uvec3(px, 7u + floatBitsToUint(P.camera.jitter_x) + 3u * floatBitsToUint(P.camera.jitter_y))).x;
-    Hit hit = metric_trace(ray.origin, ray.dir);
+    // A pixel with no ray (outside a fisheye's circle) traces nothing, but
+    // stays in its quad for the neighbours' differences.
+    Hit hit = hit_start(OUT_NO_RAY, ray.origin, ray.dir);
+    if (ray.valid) hit = metric_trace(ray.origin, ray.dir);
     hit.g *= observer_g;
 #ifdef GEODESIC_AOV
     vec4 aov = vec4(0.0, 0.0, 0.0, float(hit.outcome));
@@ -188,11 +191,12 @@ void main() {
     }
     color = hit.glow + hit.trans * color;
 #ifdef DISK_SPLIT
-    if (DISK_STAGE == DISK_STAGE_TRACE) list_for_disk(px, hit.disk_ahead && inside);
+    if (DISK_STAGE == DISK_STAGE_TRACE) list_for_disk(px, hit.disk_ahead && inside && ray.valid);
 #endif
 #ifdef RAY_DIFFERENTIALS
     if (!inside) return;
 #endif
-    imageStore(out_img, ivec2(px), vec4(storable(color), 1.0));
+    // No ray: black and transparent (alpha 0 reaches the PNG and the EXR).
+    imageStore(out_img, ivec2(px), ray.valid ? vec4(storable(color), 1.0) : vec4(0.0));
 #endif
 }

@@ -169,7 +169,7 @@ fn compare(name: &str, position: [f64; 3], extra: &str) -> Figures {
     for row in 0..H {
         for col in 0..W {
             f.rays += 1;
-            let d = frame.ray_dir(col, row, W, H);
+            let d = frame.ray_dir(col, row, W, H).expect("a pinhole ray");
             let cpu = cpu_trace(d);
             let px = gpu.get_pixel(col, row).0;
             let gpu_code = px[3] as u32;
@@ -444,7 +444,7 @@ fn straight_rays_follow_lines_through_horizons_and_the_disk() {
     let (mut dir_err, mut radius_err): (Vec<f64>, Vec<f64>) = (vec![], vec![]);
     for row in 0..H {
         for col in 0..W {
-            let d = frame.ray_dir(col, row, W, H);
+            let d = frame.ray_dir(col, row, W, H).expect("a pinhole ray");
             let (code, want) = line(d);
             let px = gpu.get_pixel(col, row).0;
             if px[3] as u32 != code {

@@ -157,6 +157,48 @@ fn animated_cameras_obey_the_camera_rules_with_their_key_path() {
 }
 
 #[test]
+fn impossible_cameras_for_the_projections_are_refused_with_the_key() {
+    let dir = scratch();
+    for (toml, key, why) in [
+        (
+            "[camera]\nstereo = \"ods\"\n",
+            "camera.stereo",
+            "needs camera.projection = \"equirect\"",
+        ),
+        (
+            "[camera]\nprojection = \"fisheye\"\nvfov_deg = 400.0\n",
+            "camera.vfov_deg = 400",
+            "(0, 360]",
+        ),
+        (
+            "[camera]\nvfov_deg = 200.0\n",
+            "camera.vfov_deg = 200",
+            "(0, 180)",
+        ),
+        ("[camera]\nipd = -0.1\n", "camera.ipd = -0.1", ">= 0"),
+        (
+            "[camera]\nprojection = \"equirect\"\nstereo = \"ods\"\nipd = 0.0\n",
+            "camera.ipd = 0",
+            "> 0",
+        ),
+        (
+            "[camera]\nposition = [0.0, 0.0, -2.0]\nprojection = \"equirect\"\nstereo = \"ods\"\nipd = 2.5\n",
+            "camera.ipd = 2.5",
+            "puts an eye within",
+        ),
+        (
+            "[camera]\nprojection = \"cylinder\"\n",
+            "projection = \"cylinder\"",
+            "expected one of `pinhole`, `equirect`, `fisheye`",
+        ),
+    ] {
+        let e = refused_early(render_scene(&dir, toml, &[]));
+        assert!(e.contains(key) && e.contains(why), "{toml}: {e}");
+        assert!(e.contains("scene.toml:"), "names the file and line: {e}");
+    }
+}
+
+#[test]
 fn a_volumetric_disk_inside_the_photon_sphere_is_refused() {
     let dir = scratch();
     let c = render_scene(

@@ -108,7 +108,7 @@ fn compare(spin: f64, position: [f64; 3], observer: &str, aim: &str, f64_roots: 
     };
     for y in 0..H {
         for x in 0..W {
-            let d = frame.ray_dir(x, y, W, H);
+            let d = frame.ray_dir(x, y, W, H).expect("a pinhole ray");
             let ray = trace(d);
             let cpu = aov_of(&ray);
             let p = gpu.get_pixel(x, y).0.map(f64::from);

@@ -109,6 +109,10 @@ fn raymarch_params_match_the_glsl_block() {
             offset_of!(CameraParams, forward),
             offset_of!(CameraParams, jitter_y),
             offset_of!(CameraParams, size),
+            offset_of!(CameraParams, projection),
+            offset_of!(CameraParams, half_fov),
+            offset_of!(CameraParams, ipd),
+            offset_of!(CameraParams, stereo),
             offset_of!(CameraParams, _pad),
         ],
     );

@@ -2,14 +2,15 @@
 // sub-pixel jitter) to where its ray starts, its unit direction in the
 // observer's own frame and the angle the pixel spans; the observer then
 // turns that direction into a coordinate direction (and sets observer_g).
-// This file is the only place that knows the pinhole (the binding camera
-// convention, the README's "Scenes" and "Physics"), mirrored by
-// src/camera/mod.rs. A new projection (a panorama, a dome, one eye of a
-// stereo pair) is a new function here beside pinhole(), chosen in
-// camera_ray(), with its twin in src/camera/mod.rs.
+// This file is the only place that knows the projections (the binding camera
+// convention, the README's "Cameras"): the pinhole, the equirectangular
+// panorama (with omni-directional stereo) and the equidistant fisheye,
+// mirrored by src/camera/mod.rs. A new projection is a new function here
+// beside them, chosen in camera_ray(), with its twin in src/camera/mod.rs.
 #ifndef CAMERA_GLSL
 #define CAMERA_GLSL
 
+#include "constants.glsl"
 #include "params.glsl"
 #include "variant.glsl"
 #include "ray_state.glsl"
@@ -21,7 +22,19 @@ struct PixelRay {
     vec3 dir;     // unit direction: in the observer's frame from a projection,
                   // a coordinate direction from camera_ray()
     float angle;  // the pixel's angular size (radians), unlensed
+    bool valid;   // false: no ray (outside a fisheye's image circle)
 };
+
+// The pixel's place with the frame's sub-pixel jitter (0 = the pixel's
+// centre), for accumulated anti-aliasing.
+vec2 jittered(uvec2 px) {
+    return vec2(px) + 0.5 + vec2(P.camera.jitter_x, P.camera.jitter_y);
+}
+
+// A direction from its components along right, up and forward.
+vec3 camera_axes(float x, float y, float z) {
+    return x * P.camera.right + y * P.camera.up + z * P.camera.forward;
+}
 
 // The pinhole: every ray from the camera's position through the pixel's
 // place (plus jitter) on the image plane at distance 1; the pixel spans
@@ -29,13 +42,59 @@ struct PixelRay {
 PixelRay pinhole(uvec2 px) {
     uint w = P.camera.size.x, hgt = P.camera.size.y;
     float tan_half = P.camera.tan_half_fov, aspect = P.camera.aspect;
-    // Sub-pixel jitter (0 = the pixel centre) for accumulated anti-aliasing.
-    float sx = ((float(px.x) + 0.5 + P.camera.jitter_x) * (2.0 / float(w)) - 1.0) * tan_half * aspect;
-    float sy = (1.0 - (float(px.y) + 0.5 + P.camera.jitter_y) * (2.0 / float(hgt))) * tan_half;
+    vec2 q = jittered(px);
+    float sx = (q.x * (2.0 / float(w)) - 1.0) * tan_half * aspect;
+    float sy = (1.0 - q.y * (2.0 / float(hgt))) * tan_half;
     PixelRay ray;
     ray.origin = P.camera.position;
     ray.dir = normalize(P.camera.forward + sx * P.camera.right + sy * P.camera.up);
     ray.angle = 2.0 * tan_half / float(hgt);
+    ray.valid = true;
+    return ray;
+}
+
+// The equirectangular panorama: longitude across (-pi at the left edge,
+// forward at the centre), latitude down (+pi/2 at the top). With ODS the
+// image holds two panoramas, the left eye's on top: each column's ray starts
+// from its eye's place on the viewing circle (diameter ipd), at right angles
+// to the ray's horizontal direction.
+PixelRay equirect(uvec2 px) {
+    uint w = P.camera.size.x, hgt = P.camera.size.y;
+    bool ods = int(P.camera.stereo) == STEREO_ODS;
+    uint eye_h = ods ? max(hgt / 2u, 1u) : hgt;
+    float eye = 0.0;
+    if (ods) {
+        eye = px.y >= eye_h ? 1.0 : -1.0;
+        if (px.y >= eye_h) px.y = min(px.y - eye_h, eye_h - 1u);
+    }
+    vec2 q = jittered(px);
+    float lon = (q.x * (2.0 / float(w)) - 1.0) * PI;
+    float lat = (1.0 - q.y * (2.0 / float(eye_h))) * (0.5 * PI);
+    float sl = sin(lon), cl = cos(lon), sa = sin(lat), ca = cos(lat);
+    PixelRay ray;
+    ray.origin = P.camera.position + (eye * 0.5 * P.camera.ipd) * camera_axes(cl, 0.0, -sl);
+    ray.dir = normalize(camera_axes(ca * sl, sa, ca * cl));
+    ray.angle = PI / float(eye_h);
+    ray.valid = true;
+    return ray;
+}
+
+// The equidistant fisheye: the angle from forward grows linearly with the
+// distance from the image's centre, vfov / 2 at the inscribed circle (180
+// degrees: a dome master). Outside the circle no ray.
+PixelRay fisheye(uvec2 px) {
+    float w = float(P.camera.size.x), hgt = float(P.camera.size.y);
+    float s = min(w, hgt);
+    vec2 q = jittered(px);
+    float x = (2.0 * q.x - w) / s, y = (hgt - 2.0 * q.y) / s;
+    float rho = length(vec2(x, y));
+    float theta = rho * P.camera.half_fov;
+    vec2 u = rho > 0.0 ? vec2(x, y) / rho : vec2(0.0);
+    PixelRay ray;
+    ray.origin = P.camera.position;
+    ray.dir = normalize(camera_axes(sin(theta) * u.x, sin(theta) * u.y, cos(theta)));
+    ray.angle = 2.0 * P.camera.half_fov / s;
+    ray.valid = rho <= 1.0;
     return ray;
 }
 
@@ -67,7 +126,10 @@ vec3 observer_to_coordinate(vec3 origin, vec3 dir) {
 
 // Pixel px's ray with its coordinate direction; sets observer_g.
 PixelRay camera_ray(uvec2 px) {
-    PixelRay ray = pinhole(px);
+    int proj = int(P.camera.projection);
+    PixelRay ray = proj == PROJ_EQUIRECT ? equirect(px)
+                 : proj == PROJ_FISHEYE ? fisheye(px)
+                 : pinhole(px);
     ray.dir = observer_to_coordinate(ray.origin, ray.dir);
     return ray;
 }

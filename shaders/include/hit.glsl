@@ -9,6 +9,7 @@
 #define OUT_CAPTURED 1
 #define OUT_DISK 2
 #define OUT_NO_STEPS 3
+#define OUT_NO_RAY 4     // no ray: outside a fisheye's image circle
 
 struct Hit {
     int outcome;

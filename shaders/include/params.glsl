@@ -28,6 +28,13 @@
 #define OBS_FLAT 3
 #define OBS_ZAMO 4
 
+// Projections (camera.projection) and stereo (camera.stereo), as src/camera.
+#define PROJ_PINHOLE 0
+#define PROJ_EQUIRECT 1
+#define PROJ_FISHEYE 2
+#define STEREO_NONE 0
+#define STEREO_ODS 1
+
 // Temperature range of the blackbody table (log-spaced), kelvin.
 #define LUT_MIN_K 500.0
 #define LUT_MAX_K 100000.0
@@ -40,7 +47,12 @@ struct CameraParams {
     vec3 right;     float aspect;        // width / height
     vec3 up;        float jitter_x;      // sub-pixel jitter, pixels (0: the pixel's centre)
     vec3 forward;   float jitter_y;      // (down)
-    uvec2 size;     uvec2 pad;           // image width, height
+    uvec2 size;                          // image width, height
+    float projection;                    // PROJ_*
+    float half_fov;                      // vfov / 2, radians (fisheye)
+    float ipd;                           // ODS: the eyes' distance (rs)
+    float stereo;                        // STEREO_*
+    vec2 pad;
 };
 
 // The observer's motion; its frame at a ray's origin comes from the metric

@@ -42,6 +42,10 @@ pub struct Orbit {
     pub vfov_deg: f64,
     /// Who holds the camera (kept from the scene).
     pub observer: crate::physics::observer::ObserverKind,
+    /// The projection, stereo and eye distance (kept from the scene).
+    pub projection: crate::camera::Projection,
+    pub stereo: crate::camera::Stereo,
+    pub ipd: f64,
     /// Whether the wheel may take the camera inside the photon sphere.
     pub allow_inside: bool,
 }
@@ -64,6 +68,9 @@ impl Orbit {
                 .clamp(-MAX_ELEVATION, MAX_ELEVATION),
             vfov_deg: camera.vfov_deg,
             observer: camera.observer,
+            projection: camera.projection,
+            stereo: camera.stereo,
+            ipd: camera.ipd,
             allow_inside: false,
         }
     }
@@ -79,6 +86,9 @@ impl Orbit {
             up: [0.0, 1.0, 0.0],
             vfov_deg: self.vfov_deg,
             observer: self.observer,
+            projection: self.projection,
+            stereo: self.stereo,
+            ipd: self.ipd,
         }
     }
 
@@ -102,7 +112,8 @@ impl Orbit {
     pub fn pan(&mut self, dx: f64, dy: f64, height: f64) {
         let cam = self.camera();
         let f = cam.frame();
-        let scale = self.distance * f.pixel_angle(height.max(1.0) as u32);
+        let h = height.max(1.0) as u32;
+        let scale = self.distance * f.pixel_angle(h, h);
         self.target += (-dx * f.right + dy * f.up) * scale;
     }
 }

@@ -12,13 +12,50 @@
 //! camera.glsl chosen in `camera_ray()`.
 
 use glam::DVec3;
+use serde::{Deserialize, Serialize};
 
-/// How pixels map to rays.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+/// How pixels map to rays (`[camera] projection`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "lowercase")]
 pub enum Projection {
     /// Every ray from one point through the image plane at distance 1.
     #[default]
-    Pinhole,
+    Pinhole = 0,
+    /// The whole sphere around the camera, longitude across and latitude
+    /// down, forward at the image's centre (2:1 for square pixels).
+    Equirect = 1,
+    /// Equidistant fisheye centred on forward, its image circle inscribed in
+    /// the image; `vfov_deg` is the field across the circle (180: a dome
+    /// master). Pixels outside the circle have no ray.
+    Fisheye = 2,
+}
+
+impl Projection {
+    pub const ALL: [Projection; 3] = [
+        Projection::Pinhole,
+        Projection::Equirect,
+        Projection::Fisheye,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Projection::Pinhole => "pinhole",
+            Projection::Equirect => "equirect",
+            Projection::Fisheye => "fisheye",
+        }
+    }
+}
+
+/// `[camera] stereo`: one image, or two eyes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Stereo {
+    #[default]
+    None = 0,
+    /// Omni-directional stereo (with `equirect`): the left eye's panorama in
+    /// the top half, the right eye's in the bottom, each column's ray from
+    /// its eye's place on a circle of diameter `ipd` around the camera.
+    Ods = 1,
 }
 
 /// A pixel's ray.
@@ -32,20 +69,26 @@ pub struct PixelRay {
     pub angle: f64,
 }
 
-/// An orthonormal camera frame, by the binding convention.
+/// An orthonormal camera frame, by the binding convention, and its
+/// projection.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CameraFrame {
     pub position: DVec3,
     pub forward: DVec3,
     pub right: DVec3,
     pub up: DVec3,
-    /// tan(vfov / 2).
+    /// tan(vfov / 2) (the pinhole).
     pub tan_half_fov: f64,
+    /// vfov / 2, radians (the fisheye's field from centre to circle).
+    pub half_fov: f64,
     pub projection: Projection,
+    pub stereo: Stereo,
+    /// The distance between the two eyes (ODS), in rs.
+    pub ipd: f64,
 }
 
 impl CameraFrame {
-    /// The frame at `position` looking toward `look_at`: `forward =
+    /// The pinhole frame at `position` looking toward `look_at`: `forward =
     /// normalize(look_at - position)`, `right = normalize(cross(up,
     /// forward))`, `up = cross(forward, right)`.
     pub fn new(position: DVec3, look_at: DVec3, up: DVec3, vfov_deg: f64) -> Self {
@@ -57,12 +100,33 @@ impl CameraFrame {
             right,
             up: forward.cross(right),
             tan_half_fov: (vfov_deg.to_radians() * 0.5).tan(),
+            half_fov: vfov_deg.to_radians() * 0.5,
             projection: Projection::Pinhole,
+            stereo: Stereo::None,
+            ipd: 0.0,
+        }
+    }
+
+    /// The same frame with another projection (and stereo, `ipd`).
+    pub fn with_projection(mut self, projection: Projection, stereo: Stereo, ipd: f64) -> Self {
+        self.projection = projection;
+        self.stereo = stereo;
+        self.ipd = ipd;
+        self
+    }
+
+    /// The height of one eye's image: half the image's for ODS (the left
+    /// eye on top), else all of it.
+    pub fn eye_height(&self, height: u32) -> u32 {
+        match self.stereo {
+            Stereo::Ods => (height / 2).max(1),
+            Stereo::None => height.max(1),
         }
     }
 
     /// The ray through pixel (`col`, `row`) of a `width` x `height` image,
-    /// row 0 at the top, offset by `jitter` pixels (0, 0: the centre; y down).
+    /// row 0 at the top, offset by `jitter` pixels (0, 0: the centre; y
+    /// down). `None` for a pixel with no ray (outside a fisheye's circle).
     pub fn pixel_ray(
         &self,
         col: u32,
@@ -70,35 +134,79 @@ impl CameraFrame {
         width: u32,
         height: u32,
         jitter: (f64, f64),
-    ) -> PixelRay {
+    ) -> Option<PixelRay> {
+        let (w, h) = (f64::from(width.max(1)), f64::from(height.max(1)));
+        let c = f64::from(col) + 0.5 + jitter.0;
+        let angle = self.pixel_angle(width, height);
+        let along = |x: f64, y: f64, z: f64| x * self.right + y * self.up + z * self.forward;
         match self.projection {
             Projection::Pinhole => {
-                let aspect = f64::from(width) / f64::from(height);
-                let sx = (2.0 * (f64::from(col) + 0.5 + jitter.0) / f64::from(width) - 1.0)
-                    * self.tan_half_fov
-                    * aspect;
-                let sy = (1.0 - 2.0 * (f64::from(row) + 0.5 + jitter.1) / f64::from(height))
-                    * self.tan_half_fov;
-                PixelRay {
+                let r = f64::from(row) + 0.5 + jitter.1;
+                let sx = (2.0 * c / w - 1.0) * self.tan_half_fov * (w / h);
+                let sy = (1.0 - 2.0 * r / h) * self.tan_half_fov;
+                Some(PixelRay {
                     origin: self.position,
                     dir: (self.forward + sx * self.right + sy * self.up).normalize(),
-                    angle: self.pixel_angle(height),
+                    angle,
+                })
+            }
+            Projection::Equirect => {
+                // ODS: the left eye's rows on top, the right eye's below.
+                let eh = self.eye_height(height);
+                let (eye, row) = match self.stereo {
+                    Stereo::Ods if row >= eh => (1.0, (row - eh).min(eh - 1)),
+                    Stereo::Ods => (-1.0, row),
+                    Stereo::None => (0.0, row),
+                };
+                let r = f64::from(row) + 0.5 + jitter.1;
+                let lon = (2.0 * c / w - 1.0) * std::f64::consts::PI;
+                let lat = (1.0 - 2.0 * r / f64::from(eh)) * std::f64::consts::FRAC_PI_2;
+                let (sl, cl) = lon.sin_cos();
+                let (sa, ca) = lat.sin_cos();
+                let offset = eye * 0.5 * self.ipd * along(cl, 0.0, -sl);
+                Some(PixelRay {
+                    origin: self.position + offset,
+                    dir: along(ca * sl, sa, ca * cl).normalize(),
+                    angle,
+                })
+            }
+            Projection::Fisheye => {
+                let r = f64::from(row) + 0.5 + jitter.1;
+                let s = w.min(h);
+                let x = (2.0 * c - w) / s;
+                let y = (h - 2.0 * r) / s;
+                let rho = x.hypot(y);
+                if rho > 1.0 {
+                    return None;
                 }
+                let theta = rho * self.half_fov;
+                let (st, ct) = theta.sin_cos();
+                // At the centre (rho = 0) the direction is forward.
+                let (ux, uy) = if rho > 0.0 { (x / rho, y / rho) } else { (0.0, 0.0) };
+                Some(PixelRay {
+                    origin: self.position,
+                    dir: along(st * ux, st * uy, ct).normalize(),
+                    angle,
+                })
             }
         }
     }
 
     /// The unit direction of the ray through the centre of pixel (`col`,
-    /// `row`), in the observer's frame.
-    pub fn ray_dir(&self, col: u32, row: u32, width: u32, height: u32) -> DVec3 {
-        self.pixel_ray(col, row, width, height, (0.0, 0.0)).dir
+    /// `row`), in the observer's frame (`None`: no ray there).
+    pub fn ray_dir(&self, col: u32, row: u32, width: u32, height: u32) -> Option<DVec3> {
+        self.pixel_ray(col, row, width, height, (0.0, 0.0))
+            .map(|r| r.dir)
     }
 
-    /// The angle one pixel of an image `height` pixels tall spans at its
-    /// centre, radians.
-    pub fn pixel_angle(&self, height: u32) -> f64 {
+    /// The angle one pixel of a `width` x `height` image spans at the
+    /// image's centre (a panorama: at its equator, down), radians.
+    pub fn pixel_angle(&self, width: u32, height: u32) -> f64 {
+        let (w, h) = (f64::from(width.max(1)), f64::from(height.max(1)));
         match self.projection {
-            Projection::Pinhole => 2.0 * self.tan_half_fov / f64::from(height.max(1)),
+            Projection::Pinhole => 2.0 * self.tan_half_fov / h,
+            Projection::Equirect => std::f64::consts::PI / f64::from(self.eye_height(height)),
+            Projection::Fisheye => 2.0 * self.half_fov / w.min(h),
         }
     }
 }
@@ -114,11 +222,11 @@ mod tests {
         assert!(f.right.x > 0.99 && f.forward.z > 0.99 && f.up.y > 0.99);
         // The top-left pixel of a 2x2 image looks up and left, at 45 degrees
         // off the axis in each direction (tan(45) * (1 - 1/2)).
-        let d = f.ray_dir(0, 0, 2, 2);
+        let d = f.ray_dir(0, 0, 2, 2).unwrap();
         assert!(d.x < 0.0 && d.y > 0.0);
         assert!((d.x / d.z + 0.5).abs() < 1e-12 && (d.y / d.z - 0.5).abs() < 1e-12);
         // Half a pixel of jitter to the right lands on the axis.
-        let r = f.pixel_ray(0, 0, 2, 2, (0.5, 0.5));
+        let r = f.pixel_ray(0, 0, 2, 2, (0.5, 0.5)).unwrap();
         assert!((r.dir - f.forward).length() < 1e-12);
         assert!((r.angle - 1.0).abs() < 1e-12);
     }

@@ -59,7 +59,13 @@ pub fn write_frame(frame: &Frame, path: &Path, format: FileFormat) -> Result<()>
     let img: image::DynamicImage = match (&frame.pixels, format) {
         (Pixels::Rgba8(p), FileFormat::Png) => {
             let rgba = image::RgbaImage::from_raw(w, h, p.clone()).ok_or_else(bad)?;
-            image::DynamicImage::ImageRgb8(image::DynamicImage::ImageRgba8(rgba).to_rgb8())
+            // RGB, unless some pixel has no ray (a fisheye's corners): then
+            // RGBA, transparent there.
+            if p.chunks_exact(4).all(|px| px[3] == 255) {
+                image::DynamicImage::ImageRgb8(image::DynamicImage::ImageRgba8(rgba).to_rgb8())
+            } else {
+                image::DynamicImage::ImageRgba8(rgba)
+            }
         }
         // Alpha is written as rendered: 1 for beauty, the outcome for the AOV.
         (Pixels::Rgba32F(p), FileFormat::Exr) => image::DynamicImage::ImageRgba32F(

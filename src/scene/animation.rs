@@ -26,9 +26,8 @@ impl Keyframe {
         Camera {
             position: self.position,
             look_at: self.look_at,
-            up: base.up,
             vfov_deg: self.vfov_deg.unwrap_or(base.vfov_deg),
-            observer: base.observer,
+            ..base.clone()
         }
     }
 }
@@ -177,9 +176,8 @@ impl Animation {
                 Camera {
                     position: lerp3(a.position, b.position),
                     look_at: lerp3(a.look_at, b.look_at),
-                    up: base.up,
                     vfov_deg: fov(a) + (fov(b) - fov(a)) * s,
-                    observer: base.observer,
+                    ..base.clone()
                 }
             }
         }

@@ -137,9 +137,9 @@ mod tests {
         assert!(f.forward.z > 0.99);
         assert!(f.up.y > 0.99);
         // Top-left pixel points up and left, the centre straight ahead.
-        let d = f.ray_dir(0, 0, 4, 2);
+        let d = f.ray_dir(0, 0, 4, 2).expect("a pinhole ray");
         assert!(d.x < 0.0 && d.y > f.forward.y);
-        let c = f.ray_dir(1, 0, 3, 1);
+        let c = f.ray_dir(1, 0, 3, 1).expect("a pinhole ray");
         assert!((c - f.forward).length() < 1e-12);
     }
 }

@@ -5,7 +5,11 @@ use std::path::Path;
 
 use glam::DVec3;
 
-pub use crate::camera::CameraFrame;
+pub use crate::camera::{CameraFrame, Projection, Stereo};
+
+/// The eyes' distance for ODS when `ipd` is omitted, rs: small beside the
+/// hole, so the parallax shows near it and not on the distant sky.
+pub const DEFAULT_IPD: f64 = 0.1;
 use serde::Deserialize;
 
 use super::animation::Animation;
@@ -22,6 +26,14 @@ pub struct Camera {
     /// Who holds the camera: "static" (at rest), "orbiting", "falling" or
     /// "flat" (the pixel direction used as the coordinate direction).
     pub observer: ObserverKind,
+    /// How pixels become directions: "pinhole", "equirect" (the whole
+    /// sphere, 2:1) or "fisheye" (equidistant; `vfov_deg` across the circle).
+    pub projection: Projection,
+    /// "none" or "ods" (omni-directional stereo, with equirect: left eye on
+    /// top, right eye below).
+    pub stereo: Stereo,
+    /// The distance between the eyes for ODS, rs.
+    pub ipd: f64,
 }
 
 impl Default for Camera {
@@ -32,6 +44,9 @@ impl Default for Camera {
             up: [0.0, 1.0, 0.0],
             vfov_deg: 60.0,
             observer: ObserverKind::Static,
+            projection: Projection::Pinhole,
+            stereo: Stereo::None,
+            ipd: DEFAULT_IPD,
         }
     }
 }
@@ -45,6 +60,7 @@ impl Camera {
             DVec3::from(self.up),
             self.vfov_deg,
         )
+        .with_projection(self.projection, self.stereo, self.ipd)
     }
 }
 

@@ -5,7 +5,7 @@ use glam::DVec3;
 
 use super::locate::Seg::{self, Idx, Key};
 use super::locate::display_path;
-use super::{Camera, CameraPath, DiskKind, MAX_HOLES, Scene, SkyKind};
+use super::{Camera, CameraPath, DiskKind, MAX_HOLES, Projection, Scene, SkyKind, Stereo};
 use crate::physics::observer::ObserverKind;
 
 /// A rejected value: its key path, the value as written, and the reason.
@@ -168,8 +168,35 @@ impl Scene {
         if !in_range(&c.up) {
             finite3(&[Key("camera"), Key("up")], &c.up)?;
         }
-        if !(c.vfov_deg > 0.0 && c.vfov_deg < 180.0) {
-            return fail(&key("vfov_deg"), c.vfov_deg, "must be in (0, 180) degrees");
+        match c.projection {
+            Projection::Pinhole if !(c.vfov_deg > 0.0 && c.vfov_deg < 180.0) => {
+                return fail(&key("vfov_deg"), c.vfov_deg, "must be in (0, 180) degrees");
+            }
+            Projection::Fisheye if !(c.vfov_deg > 0.0 && c.vfov_deg <= 360.0) => {
+                return fail(
+                    &key("vfov_deg"),
+                    c.vfov_deg,
+                    "must be in (0, 360] degrees for a fisheye (the field across its circle)",
+                );
+            }
+            _ => {}
+        }
+        let lens = |k: &'static str| [Key("camera"), Key(k)];
+        if c.stereo == Stereo::Ods && c.projection != Projection::Equirect {
+            return fail(
+                &lens("stereo"),
+                "\"ods\"",
+                format!(
+                    "needs camera.projection = \"equirect\" (it is \"{}\")",
+                    c.projection.name()
+                ),
+            );
+        }
+        if !(c.ipd.in_range() && c.ipd >= 0.0) {
+            return fail(&lens("ipd"), c.ipd, "must be a finite distance >= 0 (rs)");
+        }
+        if c.stereo == Stereo::Ods && c.ipd <= 0.0 {
+            return fail(&lens("ipd"), c.ipd, "must be > 0 with stereo = \"ods\"");
         }
         let fwd = DVec3::from(c.look_at) - DVec3::from(c.position);
         if fwd.length() < 1e-9 {
@@ -201,6 +228,15 @@ impl Scene {
             if r <= h.rs && !spins {
                 let why = format!("is inside the horizon of black_hole[{i}]");
                 return fail(&key("position"), vec3(&c.position), why);
+            }
+            // Each ODS eye sits ipd / 2 from the camera: both outside the
+            // hole, with room to spare (an eye at the horizon sees nothing).
+            if c.stereo == Stereo::Ods && self.physics.gravity && r - 0.5 * c.ipd <= 1.01 * h.rs {
+                let why = format!(
+                    "puts an eye within 1.01 rs of black_hole[{i}] (the camera is {r:.4} from it; \
+                     each eye sits ipd / 2 from the camera)"
+                );
+                return fail(&lens("ipd"), c.ipd, why);
             }
             if nearest.is_none_or(|(_, best, _)| r < best) {
                 nearest = Some((rel, r, h.rs));

@@ -132,8 +132,11 @@ pub fn split_pays(scene: &Scene, width: u32, height: u32) -> bool {
             // The pixel at the centre of each cell of the grid.
             let x = ((2 * col + 1) * width / (2 * cols)).min(width - 1);
             let y = ((2 * row + 1) * height / (2 * rows)).min(height - 1);
-            let d = observer.coordinate_direction(frame.ray_dir(x, y, width, height));
-            let outcome = spacetime.trace(Some(&disk), frame.position, d, &Default::default());
+            let Some(ray) = frame.pixel_ray(x, y, width, height, (0.0, 0.0)) else {
+                continue;
+            };
+            let d = observer.coordinate_direction(ray.dir);
+            let outcome = spacetime.trace(Some(&disk), ray.origin, d, &Default::default());
             if matches!(outcome, crate::physics::Outcome::Disk { .. }) {
                 on_disk += 1;
             }

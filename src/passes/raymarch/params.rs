@@ -32,7 +32,15 @@ pub struct CameraParams {
     pub jitter_y: f32,
     /// Image width and height.
     pub size: [u32; 2],
-    pub _pad: [u32; 2],
+    /// `Projection` as a number (`PROJ_*`).
+    pub projection: f32,
+    /// vfov / 2, radians (the fisheye's field from centre to circle).
+    pub half_fov: f32,
+    /// ODS: the eyes' distance (rs); 0 for one image.
+    pub ipd: f32,
+    /// `Stereo` as a number (`STEREO_*`).
+    pub stereo: f32,
+    pub _pad: [f32; 2],
 }
 
 /// Who holds the camera (`physics::observer`).
@@ -286,7 +294,11 @@ fn camera(scene: &Scene, frame: &FrameSpec) -> CameraParams {
         forward: v3(f.forward),
         jitter_y: frame.jitter.1,
         size: [frame.width, frame.height],
-        _pad: [0; 2],
+        projection: f.projection as u32 as f32,
+        half_fov: f.half_fov as f32,
+        ipd: f.ipd as f32,
+        stereo: f.stereo as u32 as f32,
+        _pad: [0.0; 2],
     }
 }
 
