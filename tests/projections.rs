@@ -59,7 +59,9 @@ fn fisheye(f: &Frame, c: u32, r: u32, w: u32, h: u32, vfov_deg: f64) -> Option<D
 }
 
 fn angle(a: DVec3, b: DVec3) -> f64 {
-    2.0 * (0.5 * (a.normalize() - b.normalize()).length()).min(1.0).asin()
+    2.0 * (0.5 * (a.normalize() - b.normalize()).length())
+        .min(1.0)
+        .asin()
 }
 
 /// Where a straight ray first passes within `rs` of the origin (the hole),
@@ -115,7 +117,10 @@ fn with_gravity_off_the_aov_reproduces_the_panorama_and_the_dome_ray_by_ray() {
     assert!(captured > 0, "the hole ahead is in the panorama");
     // The pixel behind the camera (the left and right edges) looks back.
     let back = aov.get_pixel(0, h / 2).0;
-    assert!(f64::from(back[2]) < -0.99, "the left edge looks backward: {back:?}");
+    assert!(
+        f64::from(back[2]) < -0.99,
+        "the left edge looks backward: {back:?}"
+    );
 
     // Fisheye, 220 degrees across its circle, on a wider than tall image:
     // the circle is inscribed in the height, and outside it there is no ray
@@ -148,7 +153,10 @@ fn with_gravity_off_the_aov_reproduces_the_panorama_and_the_dome_ray_by_ray() {
     println!("fisheye {w}x{h}: worst direction error {worst:.2e} rad, {rays} rays, {none} without");
     assert!(worst < DIR_TOL, "fisheye: {worst:.3e} rad");
     // The circle of radius 20 pixels: pi 20^2 = 1257 of the 2560 pixels.
-    assert!((1200..1320).contains(&rays) && none == 2560 - rays, "{rays} rays, {none} without");
+    assert!(
+        (1200..1320).contains(&rays) && none == 2560 - rays,
+        "{rays} rays, {none} without"
+    );
 }
 
 #[test]
@@ -169,7 +177,11 @@ fn with_gravity_off_each_ods_eye_starts_on_its_viewing_circle() {
     let mut hits = [0usize; 2];
     let mut shift: f64 = 0.0;
     for r in 0..h {
-        let (eye, er) = if r < eye_h { (-1.0, r) } else { (1.0, r - eye_h) };
+        let (eye, er) = if r < eye_h {
+            (-1.0, r)
+        } else {
+            (1.0, r - eye_h)
+        };
         for c in 0..w {
             let (circle, d) = equirect(&f, c, er, w, eye_h);
             let o = f.pos + eye * 0.5 * ipd * circle;
@@ -203,7 +215,10 @@ fn with_gravity_off_each_ods_eye_starts_on_its_viewing_circle() {
     // The eyes' hit points differ by up to `shift`; an origin off by a
     // tenth of the eye's offset would move them by far more than this.
     assert!(shift > 0.3, "the test cannot tell the eyes apart: {shift}");
-    assert!(worst_r < 2e-5 && worst_phi < 2e-5, "{worst_r:.3e} {worst_phi:.3e}");
+    assert!(
+        worst_r < 2e-5 && worst_phi < 2e-5,
+        "{worst_r:.3e} {worst_phi:.3e}"
+    );
 }
 
 #[test]
@@ -243,7 +258,10 @@ fn the_ods_eyes_see_the_shadow_with_parallax_of_the_right_sign() {
         "ODS parallax at {r} rs, ipd {ipd}: shadow centroid column left eye {left:.2}, right eye {right:.2} (difference {:.2} px, straight-line estimate {expected:.2})",
         left - right
     );
-    assert!(left > f64::from(w) / 2.0 && right < f64::from(w) / 2.0, "{left} {right}");
+    assert!(
+        left > f64::from(w) / 2.0 && right < f64::from(w) / 2.0,
+        "{left} {right}"
+    );
     let diff = left - right;
     assert!(
         diff > 0.5 * expected && diff < 2.0 * expected,
@@ -254,7 +272,8 @@ fn the_ods_eyes_see_the_shadow_with_parallax_of_the_right_sign() {
 #[test]
 fn a_dome_master_is_black_and_transparent_outside_its_circle() {
     let dir = scratch();
-    let toml = "[camera]\nposition = [0.0, -12.0, -3.0]\nprojection = \"fisheye\"\nvfov_deg = 180.0\n";
+    let toml =
+        "[camera]\nposition = [0.0, -12.0, -3.0]\nprojection = \"fisheye\"\nvfov_deg = 180.0\n";
     let _ = render_png(&dir, "dome", SceneSrc::Toml(toml), 96, 64);
     let img = image::open(path_in(&dir, "dome.png"))
         .expect("PNG")
@@ -269,5 +288,8 @@ fn a_dome_master_is_black_and_transparent_outside_its_circle() {
         .flat_map(|x| (0..64).map(move |y| (x, y)))
         .filter(|&(x, y)| img.get_pixel(x, y).0[0] > 100)
         .count();
-    assert!(bright > 50, "the disk shows inside the dome: {bright} bright pixels");
+    assert!(
+        bright > 50,
+        "the disk shows inside the dome: {bright} bright pixels"
+    );
 }

@@ -381,6 +381,39 @@ fn choice<T: PartialEq + Copy>(ui: &mut Ui, label: &str, v: &mut T, options: &[(
     });
 }
 
+/// `[camera] projection`, `stereo` and `ipd`. Picking the fisheye starts it
+/// as a dome master (180 degrees); back to the pinhole, a field it cannot
+/// show returns to 60 degrees.
+fn projection_editor(ui: &mut Ui, c: &mut crate::scene::Camera) {
+    use crate::camera::{Projection, Stereo};
+    let before = c.projection;
+    let options: Vec<(Projection, &str)> = Projection::ALL.iter().map(|p| (*p, p.name())).collect();
+    choice(ui, "projection", &mut c.projection, &options);
+    if c.projection != before {
+        match c.projection {
+            Projection::Fisheye => c.vfov_deg = 180.0,
+            Projection::Pinhole if c.vfov_deg >= 180.0 => c.vfov_deg = 60.0,
+            _ => {}
+        }
+        if c.projection != Projection::Equirect {
+            c.stereo = Stereo::None;
+        }
+    }
+    ui.label(match c.projection {
+        Projection::Pinhole => "a flat image plane, vfov_deg top to bottom",
+        Projection::Equirect => "the whole sky around the camera (2:1, vfov_deg unused)",
+        Projection::Fisheye => "equidistant, vfov_deg across the circle (180: a dome master)",
+    });
+    if c.projection == Projection::Equirect {
+        let mut ods = c.stereo == Stereo::Ods;
+        ui.checkbox(&mut ods, "omni-directional stereo (left eye on top)");
+        c.stereo = if ods { Stereo::Ods } else { Stereo::None };
+        if ods {
+            num(ui, "ipd (rs)", &mut c.ipd, 0.01);
+        }
+    }
+}
+
 /// Every scene key, grouped as in the TOML.
 fn scene_editor(ui: &mut Ui, s: &mut Scene) {
     camera_and_holes(ui, s);
@@ -398,6 +431,7 @@ fn camera_and_holes(ui: &mut Ui, s: &mut Scene) {
             vec3(ui, "look_at", &mut s.camera.look_at, 0.05);
             vec3(ui, "up", &mut s.camera.up, 0.01);
             num(ui, "vfov_deg", &mut s.camera.vfov_deg, 0.2);
+            projection_editor(ui, &mut s.camera);
             let options: Vec<(ObserverKind, &str)> =
                 ObserverKind::ALL.iter().map(|k| (*k, k.name())).collect();
             choice(ui, "observer", &mut s.camera.observer, &options);

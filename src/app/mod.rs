@@ -568,15 +568,23 @@ impl Running {
         }
     }
 
-    /// F12: the view at full quality (the free view's full resolution, no
-    /// panel, the scene's projection) as PNG.
+    /// F12: the view at full quality (the free view's full width, no
+    /// panel, in the scene's projection) as PNG.
     fn save_view(&mut self) -> Result<()> {
         let renderer = self
             .renderer
             .as_mut()
             .ok_or_else(|| Error::Other("renderer already shut down".into()))?;
-        // The view's size (the part of the window the panel leaves free).
-        let (_, w, h) = self.view;
+        // The view's width (the part of the window the panel leaves free);
+        // the height the projection's own shape asks: the view's for the
+        // pinhole, half the width for a panorama (2:1), the width for a
+        // stereo pair of panoramas or a dome.
+        let (_, w, view_h) = self.view;
+        let h = match (self.scene.camera.projection, self.scene.camera.stereo) {
+            (Projection::Pinhole, _) => view_h,
+            (Projection::Equirect, Stereo::None) => (w / 2).max(1),
+            (Projection::Equirect, Stereo::Ods) | (Projection::Fisheye, _) => w,
+        };
         renderer.wait_idle()?;
         let mut scene = self.scene.clone();
         scene.time = self.time;
@@ -605,4 +613,5 @@ impl Running {
     }
 }
 
+use crate::camera::{Projection, Stereo};
 use crate::render::halton;

@@ -182,7 +182,11 @@ impl CameraFrame {
                 let theta = rho * self.half_fov;
                 let (st, ct) = theta.sin_cos();
                 // At the centre (rho = 0) the direction is forward.
-                let (ux, uy) = if rho > 0.0 { (x / rho, y / rho) } else { (0.0, 0.0) };
+                let (ux, uy) = if rho > 0.0 {
+                    (x / rho, y / rho)
+                } else {
+                    (0.0, 0.0)
+                };
                 Some(PixelRay {
                     origin: self.position,
                     dir: along(st * ux, st * uy, ct).normalize(),
