@@ -103,6 +103,11 @@ pub enum Command {
         /// map: anti-aliased stills and sequences at N times the ray march.
         #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1024))]
         spp: u32,
+        /// The fraction of each frame's interval the shutter is open, in
+        /// [0, 1] (overrides [animation] shutter): the --spp samples spread
+        /// over it, so the disk's turning and the camera's motion blur.
+        #[arg(long, value_name = "F", value_parser = parse_shutter)]
+        shutter: Option<f64>,
         /// With --frames: render only the frames whose files are missing (each
         /// file is written whole and renamed into place, so one that exists is
         /// complete), e.g. after an interrupted run.
@@ -138,6 +143,15 @@ pub enum Command {
         #[arg(long)]
         trace: Option<PathBuf>,
     },
+}
+
+fn parse_shutter(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if (0.0..=1.0).contains(&v) => Ok(v),
+        _ => Err(format!(
+            "{s:?} is not a shutter fraction: give a number from 0 (closed) to 1 (open the whole frame)"
+        )),
+    }
 }
 
 fn parse_range(s: &str) -> Result<std::ops::Range<u64>, String> {
@@ -215,6 +229,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
             frames,
             exr_post,
             spp,
+            shutter,
             resume,
         } => render::run(
             view,
@@ -224,6 +239,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
                 frames,
                 exr_post,
                 spp,
+                shutter,
                 resume,
             },
         ),

@@ -1,4 +1,4 @@
-//! `blackhole render`: stills and numbered sequences, offscreen, to PNG or EXR.
+//! `blackhole render`: stills, numbered sequences (PNG, EXR) and videos (through ffmpeg), offscreen.
 
 use std::collections::HashSet;
 use std::ops::Range;
@@ -9,6 +9,7 @@ use std::time::Instant;
 
 use super::outputs::{self, Output, numbered};
 use super::{Aov, View, finish, load_scene};
+use crate::output::video::{Container, VideoWriter};
 use crate::output::{self, FileFormat};
 use crate::{Error, Renderer, RendererOptions, Scene};
 
@@ -19,6 +20,8 @@ pub struct Options {
     pub exr_post: bool,
     /// Jittered samples per pixel.
     pub spp: u32,
+    /// Overrides `[animation] shutter`.
+    pub shutter: Option<f64>,
     /// Skip the frames of a sequence whose files exist.
     pub resume: bool,
 }
@@ -81,6 +84,7 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
         frames,
         exr_post,
         spp,
+        shutter,
         resume,
     } = options;
     let View {
@@ -90,14 +94,54 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
     } = view;
 
     // Check everything the user gave before touching the GPU.
-    let scene = load_scene(scene.as_deref())?;
+    let mut scene = load_scene(scene.as_deref())?;
+    if let Some(s) = shutter {
+        scene.animation.shutter = s;
+    }
+    let video = Container::from_path(&out);
     Output {
         flag: "--out",
         path: &out,
-        extensions: &["png", "exr"],
-        what: "PNG (8-bit sRGB) or EXR (linear HDR)",
+        extensions: &["png", "exr", "mp4", "webm", "mov"],
+        what: "PNG (8-bit sRGB), EXR (linear HDR) or video (MP4, WebM, MOV)",
     }
-    .check(&scene.input_files(), frames.as_ref())?;
+    // A video is one file, not numbered ones.
+    .check(
+        &scene.input_files(),
+        frames.as_ref().filter(|_| video.is_none()),
+    )?;
+    if let Some(container) = video {
+        let Some(range) = frames else {
+            return Err(Error::Usage(format!(
+                "--out {}: a video is a sequence; give --frames A..B (or a .png or .exr --out for a still)",
+                out.display()
+            )));
+        };
+        if resume {
+            return Err(Error::Usage(
+                "--resume continues a sequence of numbered images; a video is written whole (render PNG frames to resume, then join them with ffmpeg)".into(),
+            ));
+        }
+        if aov != Aov::Beauty || exr_post {
+            return Err(Error::Usage(format!(
+                "--out {}: video holds the 8-bit image; the geodesic AOV and --exr-post need an .exr --out",
+                out.display()
+            )));
+        }
+        container.check(width, height)?;
+        scene.check_frames(&range)?;
+        catch_signals(&out);
+        let job = Job {
+            scene: &scene,
+            out: &out,
+            format: FileFormat::Png,
+            kind: crate::OutputKind::Ldr,
+            width,
+            height,
+            spp,
+        };
+        return job.video(range, container);
+    }
     let format = FileFormat::from_path(&out)?;
     if aov == Aov::Geodesic && format != FileFormat::Exr {
         return Err(Error::Usage(format!(
@@ -139,6 +183,19 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
     }
 }
 
+/// The progress bar of a sequence of `len` frames.
+fn progress_bar(len: u64) -> indicatif::ProgressBar {
+    let bar = indicatif::ProgressBar::new(len);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "{elapsed_precise} [{bar:40}] {pos}/{len} frames, ETA {eta} {msg}",
+        )
+        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
+        .progress_chars("=> "),
+    );
+    bar
+}
+
 /// What one `render` run makes.
 struct Job<'a> {
     scene: &'a Scene,
@@ -155,7 +212,14 @@ impl Job<'_> {
         let (width, height) = (self.width, self.height);
         let mut renderer = Renderer::new(RendererOptions::default())?;
         let start = Instant::now();
-        let frame = renderer.render_samples(self.scene, width, height, self.kind, self.spp)?;
+        // A still is frame 0; with the shutter open its samples spread over
+        // frame 0's interval (closed, the scene exactly as written).
+        let frame = if self.scene.animation.shutter > 0.0 {
+            let at = |s| self.scene.at_sample(0, s, self.spp);
+            renderer.render_samples_with(&at, width, height, self.kind, self.spp)?
+        } else {
+            renderer.render_samples(self.scene, width, height, self.kind, self.spp)?
+        };
         if stopped() {
             eprintln!("{}", interrupted_summary(self.out));
             finish(renderer)?;
@@ -167,6 +231,42 @@ impl Job<'_> {
             "wrote {} ({width}x{height}) in {:.0} ms on {}",
             self.out.display(),
             start.elapsed().as_secs_f64() * 1e3,
+            renderer.device_name()
+        );
+        finish(renderer)
+    }
+
+    /// Frames `range` as one video through ffmpeg, with the progress bar of
+    /// a sequence; written to a temporary name and renamed when complete.
+    fn video(&self, range: Range<u64>, container: Container) -> Result<ExitCode, Error> {
+        let (width, height) = (self.width, self.height);
+        let total = range.end - range.start;
+        let mut renderer = Renderer::new(RendererOptions::default())?;
+        let start = Instant::now();
+        let fps = self.scene.animation.fps;
+        let mut writer = VideoWriter::start(self.out, container, (width, height), fps)?;
+        let bar = progress_bar(total);
+        for i in range.clone() {
+            if stopped() {
+                break;
+            }
+            let at = |s| self.scene.at_sample(i, s, self.spp);
+            let frame = renderer.render_samples_with(&at, width, height, self.kind, self.spp)?;
+            writer.push(&frame)?;
+            bar.inc(1);
+        }
+        bar.finish_and_clear();
+        if stopped() {
+            drop(writer);
+            eprintln!("interrupted: {} not written", self.out.display());
+            finish(renderer)?;
+            return Ok(ExitCode::from(INTERRUPTED));
+        }
+        let frames = writer.finish()?;
+        println!(
+            "wrote {} ({frames} frames, {width}x{height} at {fps} fps) in {:.1} s on {}",
+            self.out.display(),
+            start.elapsed().as_secs_f64(),
             renderer.device_name()
         );
         finish(renderer)
@@ -186,21 +286,14 @@ impl Job<'_> {
         TODO.store(todo, Ordering::SeqCst);
         let mut renderer = Renderer::new(RendererOptions::default())?;
         let start = Instant::now();
-        let bar = indicatif::ProgressBar::new(todo);
-        bar.set_style(
-            indicatif::ProgressStyle::with_template(
-                "{elapsed_precise} [{bar:40}] {pos}/{len} frames, ETA {eta} {msg}",
-            )
-            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar())
-            .progress_chars("=> "),
-        );
+        let bar = progress_bar(todo);
         for i in range.clone().filter(|i| !done.contains(i)) {
             if stopped() {
                 break;
             }
             let path = numbered(self.out, i);
-            let scene = self.scene.at_frame(i);
-            let frame = renderer.render_samples(&scene, width, height, self.kind, self.spp)?;
+            let at = |s| self.scene.at_sample(i, s, self.spp);
+            let frame = renderer.render_samples_with(&at, width, height, self.kind, self.spp)?;
             output::write_frame(&frame, &path, self.format)?;
             WRITTEN.fetch_add(1, Ordering::SeqCst);
             bar.set_message(format!("{}", path.display()));

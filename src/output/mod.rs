@@ -1,6 +1,9 @@
 //! Writing frames to disk: PNG (8-bit sRGB, tone-mapped) or EXR (linear HDR),
-//! chosen by the extension. Files are written to a temporary name beside the
-//! target and renamed, so a failure never leaves a partial file.
+//! chosen by the extension, or a sequence as one video (video.rs, through
+//! ffmpeg). Files are written to a temporary name beside the target and
+//! renamed, so a failure never leaves a partial file.
+
+pub mod video;
 
 use std::path::{Path, PathBuf};
 

@@ -73,27 +73,48 @@ impl Renderer {
         kind: OutputKind,
         spp: u32,
     ) -> Result<Frame> {
+        self.render_samples_with(&|_| scene.clone(), width, height, kind, spp)
+    }
+
+    /// As [`Renderer::render_samples`], each sample drawing its own scene:
+    /// `sample_scene(i)` for sample i (the same scene but for its time and
+    /// camera, so a shutter open over part of the frame blurs motion: see
+    /// [`Scene::at_sample`]). Everything but the time and the camera comes
+    /// from sample 0's scene.
+    pub fn render_samples_with(
+        &mut self,
+        sample_scene: &dyn Fn(u32) -> Scene,
+        width: u32,
+        height: u32,
+        kind: OutputKind,
+        spp: u32,
+    ) -> Result<Frame> {
         if spp <= 1 || kind == OutputKind::Geodesic {
-            return self.render(scene, width, height, kind);
+            return self.render(&sample_scene(0), width, height, kind);
         }
         self.check_size(width, height)?;
-        self.prepare_scene(scene)?;
+        self.prepare_scene(&sample_scene(0))?;
         // The plain EXR is the mean itself: the linear composite with
         // nothing applied turns it into the same half floats.
-        let mut post_scene;
-        let (scene, output) = if kind == OutputKind::Hdr {
-            post_scene = scene.clone();
-            post_scene.bloom.strength = 0.0;
-            post_scene.post.auto_exposure = false;
-            post_scene.post.exposure_ev = 0.0;
-            post_scene.post.saturation = 1.0;
-            (&post_scene, OutputKind::HdrPost)
+        let output = if kind == OutputKind::Hdr {
+            OutputKind::HdrPost
         } else {
-            (scene, kind)
+            kind
+        };
+        let for_output = |mut s: Scene| {
+            if kind == OutputKind::Hdr {
+                s.bloom.strength = 0.0;
+                s.post.auto_exposure = false;
+                s.post.exposure_ev = 0.0;
+                s.post.saturation = 1.0;
+            }
+            s
         };
         self.ensure_mean((width, height))?;
         let mut timings = FrameTimings::default();
         for i in 0..spp {
+            let owned = for_output(sample_scene(i));
+            let scene = &owned;
             self.slots[OFFSCREEN_SLOT].wait()?;
             let build = std::time::Instant::now();
             let jitter = (

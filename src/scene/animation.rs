@@ -83,6 +83,11 @@ pub struct Animation {
     /// point's time is the frame's time less the light's travel time along
     /// its path (one second of animation is one rs/c x `speed`).
     pub light_travel_time: bool,
+    /// The fraction of a frame's interval the shutter is open, in [0, 1]:
+    /// with `--spp N` the N samples spread over it, so the disk's turning
+    /// and the camera's motion blur as on film (0: every sample at the
+    /// frame's instant).
+    pub shutter: f64,
 }
 
 impl Default for Animation {
@@ -96,6 +101,7 @@ impl Default for Animation {
             keyframes: Vec::new(),
             fall_seconds: 10.0,
             light_travel_time: false,
+            shutter: 0.0,
         }
     }
 }

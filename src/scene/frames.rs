@@ -19,12 +19,16 @@ pub const MAX_SEQUENCE_FRAMES: u64 = 10_000_000;
 impl Scene {
     /// The camera at frame `index` of the animation.
     pub fn camera_at_frame(&self, index: u64) -> Camera {
+        self.camera_at_time(self.animation.time_of(index))
+    }
+
+    /// The camera at animation time `t`, seconds.
+    pub fn camera_at_time(&self, t: f64) -> Camera {
         let hole = self
             .black_holes
             .first()
             .map_or((DVec3::ZERO, 1.0), |h| (DVec3::from(h.position), h.rs));
-        self.animation
-            .camera_at(&self.camera, self.animation.time_of(index), hole)
+        self.animation.camera_at(&self.camera, t, hole)
     }
 
     /// Checks the camera of every frame in `range` (those after the camera

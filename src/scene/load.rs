@@ -104,11 +104,33 @@ fn known_names() -> Vec<String> {
 impl Scene {
     /// The scene at frame `index` of its animation (the camera moved).
     pub fn at_frame(&self, index: u64) -> Scene {
+        self.at_time(self.animation.time_of(index))
+    }
+
+    /// The scene at animation time `t` (seconds): its camera on the
+    /// animation's path, the disk turned to `t`.
+    pub fn at_time(&self, t: f64) -> Scene {
         Scene {
-            camera: self.camera_at_frame(index),
-            time: self.animation.time_of(index),
+            camera: self.camera_at_time(t),
+            time: t,
             ..self.clone()
         }
+    }
+
+    /// Sample `sample` of `spp` of frame `index` under `[animation]
+    /// shutter`: the shutter opens at the frame's time and stays open for
+    /// `shutter` of the frame's interval; the samples take stratified
+    /// times across it (sample i in the i-th of spp equal slices, at a
+    /// fixed Halton offset within it), so every frame is deterministic and
+    /// sharded sequences match. With the shutter closed (0) every sample is
+    /// the frame's instant.
+    pub fn at_sample(&self, index: u64, sample: u32, spp: u32) -> Scene {
+        let a = &self.animation;
+        if a.shutter <= 0.0 || spp <= 1 {
+            return self.at_frame(index);
+        }
+        let slice = (f64::from(sample) + crate::render::halton(sample + 1, 5)) / f64::from(spp);
+        self.at_time(a.time_of(index) + a.shutter * slice / a.fps)
     }
 
     /// Parses and validates TOML; `origin` names the file in messages.

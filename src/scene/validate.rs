@@ -422,13 +422,14 @@ impl Scene {
             ("orbit_speed_deg", a.orbit_speed_deg),
             ("inclination_deg", a.inclination_deg),
         ] {
-            rule(
-                v.in_range(),
-                &key(name),
-                v,
-                "must be a finite number (radius >= 0)",
-            )?;
+            rule(v.in_range(), &key(name), v, "must be a finite number")?;
         }
+        rule(
+            (0.0..=1.0).contains(&a.shutter),
+            &key("shutter"),
+            a.shutter,
+            "must be in [0, 1] (the fraction of a frame's interval the shutter is open)",
+        )?;
         rule(
             a.inclination_deg.abs() < 90.0,
             &key("inclination_deg"),
