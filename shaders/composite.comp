@@ -51,6 +51,9 @@ layout(constant_id = 4) const bool SATURATE = false;
 // march the same size, a multiple of 4 on each side): four texel fetches
 // of bloom for four pixels, where four filtered taps would read sixteen.
 layout(constant_id = 5) const bool BLOCKS = false;
+// The HDR image's alpha marks pixels with no ray (0: a fisheye's corners):
+// kept black and transparent. Off, every pixel is opaque.
+layout(constant_id = 6) const bool MASK = false;
 
 vec3 aces_narkowicz(vec3 x) {
     const float a = 2.51, b = 0.03, c = 2.43, d = 0.59, e = 0.14;
@@ -105,10 +108,10 @@ uint hash(uvec2 p) {
     return (w >> 22u) ^ w;
 }
 
-// Exposure, saturation, tone map, sRGB and dither of pixel px, stored with
-// the ray march's alpha (0 where a pixel has no ray: a fisheye's corners,
-// kept black).
+// Exposure, saturation, tone map, sRGB and dither of pixel px, stored (with
+// MASK, scaled by the ray march's alpha and carrying it).
 void finish(ivec2 px, vec3 c, float alpha) {
+    alpha = MASK ? alpha : 1.0;
     c *= alpha;
     c *= AUTO_EXPOSURE ? pc.exposure * metered.exposure : pc.exposure;
     if (SATURATE) {

@@ -61,21 +61,25 @@ pub struct Variant {
     /// 2x2 pixels an invocation, sharing four bloom texels: bloom on, the
     /// output the ray march's size and a multiple of 4 (constant 5).
     pub blocks: bool,
+    /// Where the HDR image's alpha is 0 there is no ray: black, alpha 0
+    /// (constant 6; else alpha 1 everywhere).
+    pub mask: bool,
 }
 
 impl Variant {
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against composite.comp).
-    pub const CONSTANT_NAMES: [&'static str; 6] = [
+    pub const CONSTANT_NAMES: [&'static str; 7] = [
         "UPSCALE",
         "TONEMAP",
         "BLOOM",
         "AUTO_EXPOSURE",
         "SATURATE",
         "BLOCKS",
+        "MASK",
     ];
 
-    pub fn constants(&self) -> [u32; 6] {
+    pub fn constants(&self) -> [u32; 7] {
         [
             u32::from(self.upscale),
             self.tonemap,
@@ -83,6 +87,7 @@ impl Variant {
             u32::from(self.auto_exposure),
             u32::from(self.saturate),
             u32::from(self.blocks),
+            u32::from(self.mask),
         ]
     }
 }
@@ -154,6 +159,7 @@ pub fn add_composite<'a>(
     bloom_settings: &Bloom,
     post: &Post,
     linear: bool,
+    mask: bool,
 ) -> ImageHandle {
     let (width, height) = graph.output_size();
     let CompositeInputs { bloom, exposure } = inputs;
@@ -179,6 +185,7 @@ pub fn add_composite<'a>(
             && width % 4 == 0
             && height % 4 == 0
             && bloom.is_some_and(|b| (4 * b.desc.width, 4 * b.desc.height) == (width, height)),
+        mask,
     };
     // Invocations: one per pixel, or per 2x2 block.
     let (groups_w, groups_h) = if variant.blocks {

@@ -304,6 +304,7 @@ fn add_scene_frame<'a>(
         PostSettings {
             bloom: &scene.bloom,
             post: &scene.post,
+            mask: scene.camera.projection == crate::camera::Projection::Fisheye,
         },
         output,
         accumulation,

@@ -271,7 +271,11 @@ impl Renderer {
                     g,
                     pipelines,
                     HdrSource::Image(input),
-                    PostSettings { bloom, post },
+                    PostSettings {
+                        bloom,
+                        post,
+                        mask: false,
+                    },
                     OutputKind::Ldr,
                     None,
                 )

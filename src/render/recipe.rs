@@ -37,6 +37,9 @@ pub struct Accumulation {
 pub struct PostSettings<'s> {
     pub bloom: &'s Bloom,
     pub post: &'s Post,
+    /// Pixels the ray march left transparent have no ray (a fisheye's
+    /// corners): the composite keeps them black and transparent.
+    pub mask: bool,
 }
 
 /// Adds the whole frame to `graph`; returns the image it ends in (at the
@@ -107,5 +110,6 @@ pub fn add_frame<'a>(
         settings.bloom,
         settings.post,
         output == OutputKind::HdrPost,
+        settings.mask,
     )
 }
