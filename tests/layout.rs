@@ -109,7 +109,6 @@ fn raymarch_params_match_the_glsl_block() {
             offset_of!(CameraParams, forward),
             offset_of!(CameraParams, jitter_y),
             offset_of!(CameraParams, size),
-            offset_of!(CameraParams, projection),
             offset_of!(CameraParams, half_fov),
             offset_of!(CameraParams, ipd),
             offset_of!(CameraParams, stereo),
@@ -288,6 +287,20 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
     ];
     for (name, rust) in pairs {
         assert_eq!(define(params, name), rust, "{name}");
+    }
+    let variant = include_str!("../shaders/include/variant.glsl");
+    for (name, rust) in [
+        ("PROJ_PINHOLE", r::PROJ_PINHOLE),
+        ("PROJ_EQUIRECT", r::PROJ_EQUIRECT),
+        ("PROJ_FISHEYE", r::PROJ_FISHEYE),
+    ] {
+        assert_eq!(define(variant, name), f64::from(rust), "{name}");
+    }
+    for (name, rust) in [
+        ("STEREO_NONE", r::STEREO_NONE),
+        ("STEREO_ODS", r::STEREO_ODS),
+    ] {
+        assert_eq!(define(params, name), f64::from(rust), "{name}");
     }
     assert_eq!(r::MAX_HOLES as usize, blackhole::scene::MAX_HOLES);
     let composite = include_str!("../shaders/composite.comp");

@@ -126,10 +126,10 @@ vec3 observer_to_coordinate(vec3 origin, vec3 dir) {
 
 // Pixel px's ray with its coordinate direction; sets observer_g.
 PixelRay camera_ray(uvec2 px) {
-    int proj = int(P.camera.projection);
-    PixelRay ray = proj == PROJ_EQUIRECT ? equirect(px)
-                 : proj == PROJ_FISHEYE ? fisheye(px)
-                 : pinhole(px);
+    PixelRay ray;
+    if (PROJECTION == PROJ_EQUIRECT) ray = equirect(px);
+    else if (PROJECTION == PROJ_FISHEYE) ray = fisheye(px);
+    else ray = pinhole(px);
     ray.dir = observer_to_coordinate(ray.origin, ray.dir);
     return ray;
 }

@@ -28,10 +28,7 @@
 #define OBS_FLAT 3
 #define OBS_ZAMO 4
 
-// Projections (camera.projection) and stereo (camera.stereo), as src/camera.
-#define PROJ_PINHOLE 0
-#define PROJ_EQUIRECT 1
-#define PROJ_FISHEYE 2
+// Stereo (camera.stereo), as src/camera.
 #define STEREO_NONE 0
 #define STEREO_ODS 1
 
@@ -48,10 +45,10 @@ struct CameraParams {
     vec3 up;        float jitter_x;      // sub-pixel jitter, pixels (0: the pixel's centre)
     vec3 forward;   float jitter_y;      // (down)
     uvec2 size;                          // image width, height
-    float projection;                    // PROJ_*
-    float half_fov;                      // vfov / 2, radians (fisheye)
+    float half_fov;                      // vfov / 2, radians (fisheye; the projection is PROJECTION)
     float ipd;                           // ODS: the eyes' distance (rs)
     float stereo;                        // STEREO_*
+    float pad0;
     vec2 pad;
 };
 

@@ -34,5 +34,10 @@ layout(constant_id = 8) const bool OBSERVER_MOVES = false;
 // The thin disk's temperature follows Page and Thorne's relativistic flux
 // (else the Newtonian profile).
 layout(constant_id = 9) const bool PAGE_THORNE = false;
+// How pixels become rays (camera.glsl), as src/camera `Projection`.
+#define PROJ_PINHOLE 0
+#define PROJ_EQUIRECT 1
+#define PROJ_FISHEYE 2
+layout(constant_id = 10) const int PROJECTION = PROJ_PINHOLE;
 
 #endif

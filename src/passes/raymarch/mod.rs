@@ -52,6 +52,11 @@ pub mod glsl {
     pub const DISK_STAGE_ALL: u32 = 0;
     pub const DISK_STAGE_TRACE: u32 = 1;
     pub const DISK_STAGE_DISK: u32 = 2;
+    pub const PROJ_PINHOLE: u32 = 0;
+    pub const PROJ_EQUIRECT: u32 = 1;
+    pub const PROJ_FISHEYE: u32 = 2;
+    pub const STEREO_NONE: u32 = 0;
+    pub const STEREO_ODS: u32 = 1;
     /// Workgroups (of 64 listed pixels) in one row of the disk pass's
     /// indirect dispatch.
     pub const DISK_ROW: u32 = 256;
@@ -176,6 +181,8 @@ pub struct Variant {
     pub observer_moves: bool,
     /// The thin disk's temperature is Page and Thorne's (constant 9).
     pub page_thorne: bool,
+    /// `camera::Projection` as a number (constant 10).
+    pub projection: u32,
 }
 
 impl Variant {
@@ -199,6 +206,11 @@ impl Variant {
             observer_moves: scene.observer().beta != glam::DVec3::ZERO,
             page_thorne: scene.disk.temperature_profile
                 == crate::scene::TemperatureProfile::PageThorne,
+            projection: match scene.camera.projection {
+                crate::camera::Projection::Pinhole => glsl::PROJ_PINHOLE,
+                crate::camera::Projection::Equirect => glsl::PROJ_EQUIRECT,
+                crate::camera::Projection::Fisheye => glsl::PROJ_FISHEYE,
+            },
         }
     }
 
@@ -217,7 +229,7 @@ impl Variant {
 
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against include/variant.glsl).
-    pub const CONSTANT_NAMES: [&'static str; 10] = [
+    pub const CONSTANT_NAMES: [&'static str; 11] = [
         "DISK_KIND",
         "SKY_KIND",
         "GRID_PLANE",
@@ -228,9 +240,10 @@ impl Variant {
         "DISK_STAGE",
         "OBSERVER_MOVES",
         "PAGE_THORNE",
+        "PROJECTION",
     ];
 
-    pub fn constants(&self) -> [u32; 10] {
+    pub fn constants(&self) -> [u32; 11] {
         [
             self.disk,
             self.sky,
@@ -242,12 +255,13 @@ impl Variant {
             self.disk_stage,
             u32::from(self.observer_moves),
             u32::from(self.page_thorne),
+            self.projection,
         ]
     }
 
     pub fn name(&self) -> String {
         format!(
-            "raymarch{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {}, page-thorne {})",
+            "raymarch{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {}, page-thorne {}, projection {})",
             if self.aov { " aov" } else { "" },
             self.path,
             self.disk,
@@ -259,7 +273,8 @@ impl Variant {
             self.volume_blackbody,
             self.disk_stage,
             self.observer_moves,
-            self.page_thorne
+            self.page_thorne,
+            self.projection
         )
     }
 }

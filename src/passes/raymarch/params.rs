@@ -32,15 +32,14 @@ pub struct CameraParams {
     pub jitter_y: f32,
     /// Image width and height.
     pub size: [u32; 2],
-    /// `Projection` as a number (`PROJ_*`).
-    pub projection: f32,
-    /// vfov / 2, radians (the fisheye's field from centre to circle).
+    /// vfov / 2, radians (the fisheye's field from centre to circle). (The
+    /// projection itself is a specialisation constant, `Variant`.)
     pub half_fov: f32,
     /// ODS: the eyes' distance (rs); 0 for one image.
     pub ipd: f32,
     /// `Stereo` as a number (`STEREO_*`).
     pub stereo: f32,
-    pub _pad: [f32; 2],
+    pub _pad: [f32; 3],
 }
 
 /// Who holds the camera (`physics::observer`).
@@ -294,11 +293,13 @@ fn camera(scene: &Scene, frame: &FrameSpec) -> CameraParams {
         forward: v3(f.forward),
         jitter_y: frame.jitter.1,
         size: [frame.width, frame.height],
-        projection: f.projection as u32 as f32,
         half_fov: f.half_fov as f32,
         ipd: f.ipd as f32,
-        stereo: f.stereo as u32 as f32,
-        _pad: [0.0; 2],
+        stereo: match f.stereo {
+            crate::camera::Stereo::None => glsl::STEREO_NONE,
+            crate::camera::Stereo::Ods => glsl::STEREO_ODS,
+        } as f32,
+        _pad: [0.0; 3],
     }
 }
 
