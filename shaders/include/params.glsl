@@ -48,8 +48,7 @@ struct CameraParams {
     float half_fov;                      // vfov / 2, radians (fisheye; the projection is PROJECTION)
     float ipd;                           // ODS: the eyes' distance (rs)
     float stereo;                        // STEREO_*
-    float pad0;
-    vec2 pad;
+    float pad[3];
 };
 
 // The observer's motion; its frame at a ray's origin comes from the metric
