@@ -293,3 +293,120 @@ fn a_dome_master_is_black_and_transparent_outside_its_circle() {
         "the disk shows inside the dome: {bright} bright pixels"
     );
 }
+
+/// The sky's light (radiance times each pixel's solid angle) summed over a
+/// cone around `axis`, with a smooth edge (full weight inside 14 degrees,
+/// none beyond 20) so stars astride the edge count alike in every image.
+fn flux_in_cone(
+    img: &image::Rgba32FImage,
+    dir_and_solid_angle: impl Fn(u32, u32) -> Option<(DVec3, f64)>,
+    axis: DVec3,
+) -> f64 {
+    let (inner, outer) = (14f64.to_radians(), 20f64.to_radians());
+    let mut sum = 0.0;
+    for (x, y, p) in img.enumerate_pixels() {
+        let Some((d, omega)) = dir_and_solid_angle(x, y) else {
+            continue;
+        };
+        let a = angle(d, axis);
+        let w = if a <= inner {
+            1.0
+        } else if a >= outer {
+            0.0
+        } else {
+            0.5 + 0.5 * (PI * (a - inner) / (outer - inner)).cos()
+        };
+        let l = 0.2126 * f64::from(p[0]) + 0.7152 * f64::from(p[1]) + 0.0722 * f64::from(p[2]);
+        sum += w * l * omega;
+    }
+    sum
+}
+
+#[test]
+fn the_catalogue_stars_keep_their_flux_in_every_projection() {
+    // No gravity, no disk: the same piece of the real sky through a pinhole
+    // (60 degrees), a dome (180 degrees) and a panorama, each pixel weighted
+    // by its own solid angle. The stars are drawn with footprints from their
+    // neighbours' directions, so each star's light must come out the same
+    // whatever the projection makes of its pixels.
+    let dir = scratch();
+    let base = "[physics]\ngravity = false\n[disk]\nkind = \"none\"\n[sky]\nkind = \"catalogue\"\ngalaxy = 0.0\n[camera]\nposition = [0.0, 0.0, -40.0]\nlook_at = [-30.0, 25.0, 0.0]\n";
+    let render = |name: &str, extra: &str, w: u32, h: u32| {
+        let scene = path_in(&dir, &format!("{name}.toml"));
+        std::fs::write(&scene, format!("{base}{extra}")).expect("scene");
+        let out = path_in(&dir, &format!("{name}.exr"));
+        let mut c = common::blackhole();
+        c.args([
+            "render",
+            "--width",
+            &w.to_string(),
+            "--height",
+            &h.to_string(),
+        ])
+        .arg("--scene")
+        .arg(&scene)
+        .arg("--out")
+        .arg(&out);
+        let (code, stdout, stderr) = common::run(c);
+        common::assert_clean(code, &stdout, &stderr);
+        image::open(&out).expect("EXR").to_rgba32f()
+    };
+    let f = frame([0.0, 0.0, -40.0], [-30.0, 25.0, 0.0]);
+    let axis = f.fwd;
+
+    let (pw, ph) = (320, 320);
+    let tan_half = 30f64.to_radians().tan();
+    let pin = render("pinhole", "vfov_deg = 60.0\n", pw, ph);
+    let pin_flux = flux_in_cone(
+        &pin,
+        |c, r| {
+            let sx = (2.0 * (f64::from(c) + 0.5) / f64::from(pw) - 1.0) * tan_half;
+            let sy = (1.0 - 2.0 * (f64::from(r) + 0.5) / f64::from(ph)) * tan_half;
+            let d = f.fwd + sx * f.right + sy * f.up;
+            let step = 2.0 * tan_half / f64::from(ph);
+            Some((d.normalize(), step * step / d.length().powi(3)))
+        },
+        axis,
+    );
+
+    let s = 640;
+    let dome = render("dome", "projection = \"fisheye\"\nvfov_deg = 180.0\n", s, s);
+    let half = FRAC_PI_2;
+    let dome_flux = flux_in_cone(
+        &dome,
+        |c, r| {
+            let d = fisheye(&f, c, r, s, s, 180.0)?;
+            let theta = angle(d, f.fwd).max(1e-9);
+            let step = 2.0 * half / f64::from(s);
+            Some((d, step * step * theta.sin() / theta))
+        },
+        axis,
+    );
+
+    let (ew, eh) = (1024, 512);
+    let pano = render("pano", "projection = \"equirect\"\n", ew, eh);
+    let pano_flux = flux_in_cone(
+        &pano,
+        |c, r| {
+            let (_, d) = equirect(&f, c, r, ew, eh);
+            let lat = (1.0 - 2.0 * (f64::from(r) + 0.5) / f64::from(eh)) * FRAC_PI_2;
+            Some((
+                d,
+                (2.0 * PI / f64::from(ew)) * (PI / f64::from(eh)) * lat.cos(),
+            ))
+        },
+        axis,
+    );
+    println!(
+        "sky flux in a 14-20 degree cone: pinhole {pin_flux:.5e}, dome {dome_flux:.5e} ({:+.2} %), panorama {pano_flux:.5e} ({:+.2} %)",
+        100.0 * (dome_flux / pin_flux - 1.0),
+        100.0 * (pano_flux / pin_flux - 1.0)
+    );
+    assert!(pin_flux > 0.0);
+    for (name, v) in [("dome", dome_flux), ("panorama", pano_flux)] {
+        assert!(
+            (v / pin_flux - 1.0).abs() < 0.05,
+            "{name}: {v:.5e} against the pinhole's {pin_flux:.5e}"
+        );
+    }
+}
