@@ -410,3 +410,63 @@ fn the_catalogue_stars_keep_their_flux_in_every_projection() {
         );
     }
 }
+
+#[test]
+fn every_projection_draws_every_kind_of_scene() {
+    // Each projection over the presets that between them hold every disk
+    // (thin, volumetric), sky, the grid plane, several holes, a spinning
+    // hole and the moving observers: a clean frame (validation silent) with
+    // light in it, the fisheye's corners transparent, the rest opaque.
+    use blackhole::camera::{Projection, Stereo};
+    use blackhole::{OutputKind, Pixels, Scene};
+    let mut r = common::renderer();
+    let (w, h) = (64, 64);
+    let mut drawn = 0;
+    for preset in [
+        "default",
+        "interstellar",
+        "binary",
+        "grid",
+        "gargantua",
+        "falling",
+        "edge-on",
+    ] {
+        for (projection, stereo) in [
+            (Projection::Equirect, Stereo::None),
+            (Projection::Fisheye, Stereo::None),
+            (Projection::Equirect, Stereo::Ods),
+        ] {
+            let mut scene = Scene::load(preset).expect("preset");
+            scene.camera.projection = projection;
+            scene.camera.stereo = stereo;
+            if projection == Projection::Fisheye {
+                scene.camera.vfov_deg = 180.0;
+            }
+            scene
+                .check()
+                .unwrap_or_else(|e| panic!("{preset} {projection:?} {stereo:?}: {e}"));
+            let frame = r
+                .render(&scene, w, h, OutputKind::Ldr)
+                .unwrap_or_else(|e| panic!("{preset} {projection:?} {stereo:?}: {e}"));
+            let Pixels::Rgba8(px) = frame.pixels else {
+                panic!("8-bit frame expected");
+            };
+            let what = format!("{preset} {projection:?} {stereo:?}");
+            let lit = px
+                .chunks_exact(4)
+                .filter(|p| p[..3].iter().any(|&v| v > 40))
+                .count();
+            assert!(lit > 10, "{what}: only {lit} lit pixels");
+            let corner = &px[..4];
+            if projection == Projection::Fisheye {
+                assert_eq!(corner, [0, 0, 0, 0], "{what}: corner");
+            } else {
+                assert!(px.chunks_exact(4).all(|p| p[3] == 255), "{what}: opaque");
+            }
+            drawn += 1;
+        }
+    }
+    assert_eq!(drawn, 21);
+    assert_eq!(r.validation_counts(), (0, 0));
+    r.shutdown().expect("nothing outlives the renderer");
+}
