@@ -186,7 +186,10 @@ void main() {
         // off): opaque. (The closed-form path adds the disk's light as it
         // goes.)
         float r = metric_disk_radius(hit.pos);
-        float dens = THIN_STRUCTURE ? thin_disk_density(r, disk_azimuth(hit.pos), P.disk.rotation_time) : 1.0;
+        // (Seen as it was when its light left: the spinning hole's path
+        // sets the delay; the others here have none.)
+        float t = P.disk.rotation_time - (LIGHT_DELAY ? P.disk.speed * hit.delay : 0.0);
+        float dens = THIN_STRUCTURE ? thin_disk_density(r, disk_azimuth(hit.pos), t) : 1.0;
         color = dens * disk_color(r, hit.g);
     }
     color = hit.glow + hit.trans * color;

@@ -19,6 +19,8 @@ struct Hit {
     vec3 glow;  // light gathered from the disk on the way
     float trans; // transmittance of that disk (1: clear)
     bool disk_ahead; // the trace pass left thin-disk crossings to the disk pass
+    float delay; // LIGHT_DELAY: the light's travel time from the disk hit to the camera
+                 // (scene units, c = 1), for paths that leave the disk's shading to main
 };
 
 // A path's hit before it has gone anywhere: `outcome` until the path says
@@ -32,6 +34,7 @@ Hit hit_start(int outcome, vec3 pos, vec3 dir) {
     hit.glow = vec3(0.0);
     hit.trans = 1.0;
     hit.disk_ahead = false;
+    hit.delay = 0.0;
     return hit;
 }
 
