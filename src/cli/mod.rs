@@ -77,12 +77,14 @@ pub enum Command {
         #[arg(long)]
         screenshot: Option<PathBuf>,
     },
-    /// Render a still or a sequence offscreen to PNG (8-bit sRGB, tone-mapped) or EXR (linear HDR).
+    /// Render a still or a sequence offscreen to PNG (8-bit sRGB, tone-mapped), EXR (linear HDR) or video.
     #[command(after_help = presets_help())]
     Render {
         #[command(flatten)]
         view: View,
-        /// Output file; the extension chooses the format (.png or .exr).
+        /// Output file; the extension chooses the format: .png or .exr, or
+        /// with --frames a video through ffmpeg (.mp4 H.264, .webm VP9, .mov
+        /// ProRes).
         #[arg(long, default_value = "blackhole.png")]
         out: PathBuf,
         /// What to write: the image, or per pixel where its ray went (EXR only;
@@ -91,7 +93,8 @@ pub enum Command {
         aov: Aov,
         /// Render frames A to B-1 of the scene's [animation] as a numbered
         /// sequence: --out out.png writes out_0000.png, out_0001.png, ...
-        /// Frame i is at time i / fps, so ranges can be split across machines.
+        /// (--out film.mp4: one video). Frame i is at time i / fps, so ranges
+        /// can be split across machines.
         #[arg(long, value_name = "A..B", value_parser = parse_range)]
         frames: Option<std::ops::Range<u64>>,
         /// With an .exr --out: apply bloom and exposure (still linear, no tone
