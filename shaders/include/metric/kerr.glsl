@@ -1001,57 +1001,82 @@ Hit metric_trace(vec3 x, vec3 d) {
             return hit;
         }
     }
-    // The first crossing of the disk's annulus, if any (an arithmetic
-    // progression of Mino times; the radius there in closed form).
-    bool on_disk = false;
-    float t = rad.tau_end, rc = 0.0;
-    KerrPoint end = KerrPoint(0.0, 1.0, 0.0, 1.0, 0.0, false);
-    if (DISK_KIND == DISK_THIN && eta > 0.0 && rad.kcase != 4) {
-        float r_in = float(to_m) * P.disk.inner, r_out = float(to_m) * P.disk.outer;
-        [[dont_unroll]] for (int n = 0; n < 8; ++n) {
-            float tc = kerr_crossing_tau(ang, n);
-            if (tc >= rad.tau_end) break;
-            KerrPoint e = kerr_radial_point(rad, tc);
-            float rn = kerr_r_of(rad, e);
-            if (rn > 2e4 || rn < 0.0) break;
-            if (rn >= r_in && rn <= r_out) {
-                on_disk = true;
-                t = tc;
-                rc = rn;
-                end = e;
-                break;
+    // The disk's crossings inside its annulus (an arithmetic progression of
+    // Mino times; the radius there in closed form). The first stops the
+    // path, unless the disk's structure thins it there (THIN_CROSSINGS = 2):
+    // then its light is added here, weighted by its opacity, and the path
+    // goes on to the next crossing (drawn opaque by the ray march) or the
+    // sky, as the non-rotating path does.
+    int from = 0;
+    float cpf = float(cp), spf = float(sp);
+    [[dont_unroll]] for (int stop = 0; stop < THIN_CROSSINGS; ++stop) {
+        bool on_disk = false;
+        float t = rad.tau_end, rc = 0.0;
+        KerrPoint end = KerrPoint(0.0, 1.0, 0.0, 1.0, 0.0, false);
+        if (DISK_KIND == DISK_THIN && eta > 0.0 && rad.kcase != 4) {
+            float r_in = float(to_m) * P.disk.inner, r_out = float(to_m) * P.disk.outer;
+            [[dont_unroll]] for (int n = from; n < 8; ++n) {
+                float tc = kerr_crossing_tau(ang, n);
+                if (tc >= rad.tau_end) break;
+                KerrPoint e = kerr_radial_point(rad, tc);
+                float rn = kerr_r_of(rad, e);
+                if (rn > 2e4 || rn < 0.0) break;
+                if (rn >= r_in && rn <= r_out) {
+                    on_disk = true;
+                    t = tc;
+                    rc = rn;
+                    end = e;
+                    from = n + 1;
+                    break;
+                }
             }
         }
-    }
-    if (!on_disk && rad.captured) return hit;
-    if (!on_disk) end = rad.end;
-    // The azimuth there: phi = phi_o + dphi (an equatorial ray, eta = 0 in
-    // the plane, keeps theta = pi/2 and lambda G_phi = lambda tau).
-    vec2 ct = eta != 0.0 ? kerr_angular_at(ang, lamf, t) : vec2(0.0, lamf * t);
-    float dphi = -kerr_i_phi(rad, af, lamf, t, end) - ct.y;
-    vec2 cs = cos_sin_precise(dphi);
-    float cpf = float(cp), spf = float(sp);
-    float cph = cpf * cs.x - spf * cs.y, sph = spf * cs.x + cpf * cs.y;
-    if (on_disk) {
-        // The world point (rho cos phi, 0, -rho sin phi) and the redshift of
-        // the prograde Keplerian emitter there, seen by the ZAMO:
-        // ((1 - omega lambda) / alpha) r^(3/4) sqrt(r^(3/2) - 3 r^(1/2) + 2a)
-        // / (r^(3/2) + a - lambda).
-        float rho_c = sqrt(rc * rc + af * af) / float(to_m);
-        hit.outcome = OUT_DISK;
-        hit.pos = P.metric.holes[0].xyz + rho_c * cph * e1 - rho_c * sph * e2;
-        float sr = sqrt(rc);
-        hit.g = kerr_zamo_g * sqrt(sr * rc) * sqrt(max(sr * rc - 3.0 * sr + 2.0 * af, 0.0))
-              / (sr * rc + af - lamf);
+        if (!on_disk && rad.captured) return hit;
+        if (!on_disk) end = rad.end;
+        // The azimuth there: phi = phi_o + dphi (an equatorial ray, eta = 0
+        // in the plane, keeps theta = pi/2 and lambda G_phi = lambda tau).
+        vec2 ct = eta != 0.0 ? kerr_angular_at(ang, lamf, t) : vec2(0.0, lamf * t);
+        float dphi = -kerr_i_phi(rad, af, lamf, t, end) - ct.y;
+        vec2 cs = cos_sin_precise(dphi);
+        float cph = cpf * cs.x - spf * cs.y, sph = spf * cs.x + cpf * cs.y;
+        if (on_disk) {
+            // The world point (rho cos phi, 0, -rho sin phi) and the redshift
+            // of the prograde Keplerian emitter there, seen by the ZAMO:
+            // ((1 - omega lambda) / alpha) r^(3/4) sqrt(r^(3/2) - 3 r^(1/2) + 2a)
+            // / (r^(3/2) + a - lambda).
+            float rho_c = sqrt(rc * rc + af * af) / float(to_m);
+            vec3 pos = P.metric.holes[0].xyz + rho_c * cph * e1 - rho_c * sph * e2;
+            float sr = sqrt(rc);
+            float g = kerr_zamo_g * sqrt(sr * rc) * sqrt(max(sr * rc - 3.0 * sr + 2.0 * af, 0.0))
+                    / (sr * rc + af - lamf);
+            float delay = 0.0;
 #ifndef GEODESIC_AOV
-        if (LIGHT_DELAY) hit.delay = kerr_travel_time(rad, ang, af, lamf, t) / float(to_m);
+            if (LIGHT_DELAY) delay = kerr_travel_time(rad, ang, af, lamf, t) / float(to_m);
+            if (stop + 1 < THIN_CROSSINGS) {
+                // (BL r in the scene's units, as metric_disk_radius gives it.)
+                float r_disk = rc / float(to_m);
+                float time = P.disk.rotation_time - (LIGHT_DELAY ? P.disk.speed * delay : 0.0);
+                float dens = THIN_STRUCTURE ? thin_disk_density(r_disk, disk_azimuth(pos), time) : 1.0;
+                float alpha = clamp(P.disk.opacity * dens, 0.0, 1.0);
+                if (alpha < 1.0) {
+                    hit.glow += hit.trans * alpha * dens * disk_color(r_disk, g * observer_g);
+                    hit.trans *= 1.0 - alpha;
+                    continue;
+                }
+            }
 #endif
+            hit.outcome = OUT_DISK;
+            hit.pos = pos;
+            hit.g = g;
+            hit.delay = delay;
+            return hit;
+        }
+        float cos_end = ct.x;
+        float sin_end = sqrt(max(1.0 - cos_end * cos_end, 0.0));
+        hit.outcome = OUT_ESCAPED;
+        hit.dir = normalize(sin_end * cph * e1 + cos_end * nrm - sin_end * sph * e2);
         return hit;
     }
-    float cos_end = ct.x;
-    float sin_end = sqrt(max(1.0 - cos_end * cos_end, 0.0));
-    hit.outcome = OUT_ESCAPED;
-    hit.dir = normalize(sin_end * cph * e1 + cos_end * nrm - sin_end * sph * e2);
     return hit;
 }
 
