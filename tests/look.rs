@@ -16,6 +16,13 @@ fn rgba32(f: blackhole::Frame) -> Vec<f32> {
     }
 }
 
+/// Rec. 709 luma of 8-bit RGBA pixels, in levels of 255.
+fn luma8(px: &[u8]) -> Vec<f64> {
+    px.chunks(4)
+        .map(|p| 0.2126 * f64::from(p[0]) + 0.7152 * f64::from(p[1]) + 0.0722 * f64::from(p[2]))
+        .collect()
+}
+
 fn srgb_decode(v: u8) -> f64 {
     let c = f64::from(v) / 255.0;
     if c <= 0.04045 {
@@ -270,10 +277,7 @@ fn a_spinning_holes_disk_is_delayed_as_the_non_rotating_one() {
     let mut luma = |spin: f64, delay: bool| -> Vec<f64> {
         scene.black_holes[0].spin = spin;
         scene.animation.light_travel_time = delay;
-        rgba8(r.render(&scene, w, h, OutputKind::Ldr).unwrap())
-            .chunks(4)
-            .map(|p| 0.2126 * f64::from(p[0]) + 0.7152 * f64::from(p[1]) + 0.0722 * f64::from(p[2]))
-            .collect()
+        luma8(&rgba8(r.render(&scene, w, h, OutputKind::Ldr).unwrap()))
     };
     let change =
         |a: &[f64], b: &[f64]| -> Vec<f64> { a.iter().zip(b).map(|(x, y)| x - y).collect() };
@@ -324,10 +328,7 @@ fn at_a_tiny_spin_the_thin_disk_looks_as_around_a_still_hole() {
     let (w, h) = (320, 180);
     let mut luma = |spin: f64| -> Vec<f64> {
         scene.black_holes[0].spin = spin;
-        rgba8(r.render(&scene, w, h, OutputKind::Ldr).unwrap())
-            .chunks(4)
-            .map(|p| 0.2126 * f64::from(p[0]) + 0.7152 * f64::from(p[1]) + 0.0722 * f64::from(p[2]))
-            .collect()
+        luma8(&rgba8(r.render(&scene, w, h, OutputKind::Ldr).unwrap()))
     };
     let (still, spinning) = (luma(0.0), luma(1e-4));
     let n = still.len() as f64;

@@ -39,13 +39,10 @@ pub struct Orbit {
     pub azimuth: f64,
     /// Radians above the xz plane.
     pub elevation: f64,
-    pub vfov_deg: f64,
-    /// Who holds the camera (kept from the scene).
-    pub observer: crate::physics::observer::ObserverKind,
-    /// The projection, stereo and eye distance (kept from the scene).
-    pub projection: crate::camera::Projection,
-    pub stereo: crate::camera::Stereo,
-    pub ipd: f64,
+    /// The scene's camera, for what the orbit keeps as it is: the field of
+    /// view, the observer, the projection, stereo and eye distance (its
+    /// position, look_at and up are the orbit's).
+    pub lens: Camera,
     /// Whether the wheel may take the camera inside the photon sphere.
     pub allow_inside: bool,
 }
@@ -66,11 +63,7 @@ impl Orbit {
                 .clamp(-1.0, 1.0)
                 .asin()
                 .clamp(-MAX_ELEVATION, MAX_ELEVATION),
-            vfov_deg: camera.vfov_deg,
-            observer: camera.observer,
-            projection: camera.projection,
-            stereo: camera.stereo,
-            ipd: camera.ipd,
+            lens: *camera,
             allow_inside: false,
         }
     }
@@ -84,11 +77,7 @@ impl Orbit {
             position: (self.target + offset).to_array(),
             look_at: self.target.to_array(),
             up: [0.0, 1.0, 0.0],
-            vfov_deg: self.vfov_deg,
-            observer: self.observer,
-            projection: self.projection,
-            stereo: self.stereo,
-            ipd: self.ipd,
+            ..self.lens
         }
     }
 

@@ -215,6 +215,20 @@ impl CameraFrame {
     }
 }
 
+/// The radical inverse of `i` in `base` (Halton sequence), in [0, 1): where
+/// a pixel's samples fall, across the pixel (the window's and `--spp`'s
+/// jitter, bases 2 and 3) and in time (the shutter, base 5).
+pub fn halton(mut i: u32, base: u32) -> f64 {
+    let mut f = 1.0;
+    let mut r = 0.0;
+    while i > 0 {
+        f /= f64::from(base);
+        r += f * f64::from(i % base);
+        i /= base;
+    }
+    r
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

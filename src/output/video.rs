@@ -47,12 +47,11 @@ impl Container {
         }
     }
 
-    /// ffmpeg's options for the codec and the container.
+    /// ffmpeg's options for the codec (after `-c:v` and the encoder) and the
+    /// container.
     fn args(self) -> &'static [&'static str] {
         match self {
             Container::Mp4 => &[
-                "-c:v",
-                "libx264",
                 "-preset",
                 "medium",
                 "-crf",
@@ -65,29 +64,9 @@ impl Container {
                 "mp4",
             ],
             Container::Webm => &[
-                "-c:v",
-                "libvpx-vp9",
-                "-crf",
-                "30",
-                "-b:v",
-                "0",
-                "-row-mt",
-                "1",
-                "-pix_fmt",
-                "yuv420p",
-                "-f",
-                "webm",
+                "-crf", "30", "-b:v", "0", "-row-mt", "1", "-pix_fmt", "yuv420p", "-f", "webm",
             ],
-            Container::Mov => &[
-                "-c:v",
-                "prores_ks",
-                "-profile:v",
-                "3",
-                "-pix_fmt",
-                "yuv422p10le",
-                "-f",
-                "mov",
-            ],
+            Container::Mov => &["-profile:v", "3", "-pix_fmt", "yuv422p10le", "-f", "mov"],
         }
     }
 
@@ -181,6 +160,7 @@ impl VideoWriter {
             .args(["-vf", "scale=out_color_matrix=bt709:out_range=tv"])
             .args(["-colorspace", "bt709", "-color_primaries", "bt709"])
             .args(["-color_trc", "bt709"])
+            .args(["-c:v", container.encoder().0])
             .args(container.args())
             .arg(&tmp)
             .stdin(Stdio::piped())

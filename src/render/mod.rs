@@ -17,6 +17,7 @@ use std::sync::Arc;
 
 use ash::vk;
 
+pub use crate::camera::halton;
 pub use features::Features;
 pub use pipelines::Pipelines;
 pub use recipe::{Accumulation, HdrSource, PostSettings, add_frame};
@@ -332,17 +333,4 @@ fn import_scene_images(g: &mut Graph<'_>, res: &SceneResources) -> raymarch::Sce
         volume_noise,
         sky,
     }
-}
-
-/// The radical inverse of `i` in `base` (Halton sequence), in [0, 1): the
-/// sub-pixel offsets of accumulated samples (window and `--spp`).
-pub fn halton(mut i: u32, base: u32) -> f64 {
-    let mut f = 1.0;
-    let mut r = 0.0;
-    while i > 0 {
-        f /= f64::from(base);
-        r += f * f64::from(i % base);
-        i /= base;
-    }
-    r
 }

@@ -27,7 +27,7 @@ impl Keyframe {
             position: self.position,
             look_at: self.look_at,
             vfov_deg: self.vfov_deg.unwrap_or(base.vfov_deg),
-            ..base.clone()
+            ..*base
         }
     }
 }
@@ -128,14 +128,14 @@ impl Animation {
     /// the fall heads for.
     pub fn camera_at(&self, base: &Camera, t: f64, hole: (DVec3, f64)) -> Camera {
         match self.camera {
-            CameraPath::Static => base.clone(),
+            CameraPath::Static => *base,
             CameraPath::Fall => {
                 let (centre, rs) = hole;
                 let rel = DVec3::from(base.position) - centre;
                 let r = self.fall_radius(rel.length(), rs, t);
                 Camera {
                     position: (centre + rel.normalize_or_zero() * r).to_array(),
-                    ..base.clone()
+                    ..*base
                 }
             }
             CameraPath::Orbit => {
@@ -157,13 +157,13 @@ impl Animation {
                 );
                 Camera {
                     position: (target + offset).to_array(),
-                    ..base.clone()
+                    ..*base
                 }
             }
             CameraPath::Keyframes => {
                 let k = &self.keyframes;
                 if k.is_empty() {
-                    return base.clone();
+                    return *base;
                 }
                 let i = k.iter().rposition(|f| f.time <= t).unwrap_or(0);
                 let a = &k[i];
@@ -183,7 +183,7 @@ impl Animation {
                     position: lerp3(a.position, b.position),
                     look_at: lerp3(a.look_at, b.look_at),
                     vfov_deg: fov(a) + (fov(b) - fov(a)) * s,
-                    ..base.clone()
+                    ..*base
                 }
             }
         }

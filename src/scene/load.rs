@@ -129,7 +129,7 @@ impl Scene {
         if a.shutter <= 0.0 || spp <= 1 {
             return self.at_frame(index);
         }
-        let slice = (f64::from(sample) + crate::render::halton(sample + 1, 5)) / f64::from(spp);
+        let slice = (f64::from(sample) + crate::camera::halton(sample + 1, 5)) / f64::from(spp);
         self.at_time(a.time_of(index) + a.shutter * slice / a.fps)
     }
 

@@ -16,7 +16,7 @@ use super::animation::Animation;
 use crate::physics::observer::ObserverKind;
 
 /// Camera (the binding convention in the README): `position`, `look_at`, `up`, `vfov_deg`.
-#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Camera {
     pub position: [f64; 3],
