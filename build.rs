@@ -9,7 +9,7 @@ const VARIANTS: &[(&str, &str, &[&str])] =
 
 /// The ray march is built once per metric (shaders/include/metric.glsl) and
 /// kind: (metric define, stem part) x (kind defines, stem part), the split
-/// stages for the closed-form metric only. No plain build: raymarch.comp
+/// stages for the closed forms (one hole, spinning or not) only. No plain build: raymarch.comp
 /// needs a metric. src/shaders.rs names each module.
 const METRICS: &[(&str, &str)] = &[
     ("METRIC_SCHWARZSCHILD", "schwarzschild"),
@@ -31,7 +31,10 @@ fn builds_of(name: &str) -> Vec<(String, Vec<&'static str>)> {
         let mut builds = Vec::new();
         for (metric, m) in METRICS {
             for (defines, k) in RAYMARCH_KINDS {
-                if *k == "_split" && *metric != "METRIC_SCHWARZSCHILD" {
+                if *k == "_split"
+                    && !metric.starts_with("METRIC_SCHWARZSCHILD")
+                    && !metric.starts_with("METRIC_KERR")
+                {
                     continue;
                 }
                 let mut d: Vec<&str> = metric.split(' ').collect();

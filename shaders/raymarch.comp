@@ -10,7 +10,10 @@
 // whose path crosses the disk's annulus; the disk pass, dispatched
 // indirectly over that list, adds the disk in front. On a CPU driver every
 // branch costs every pixel, so this is what keeps the disk's cost to the
-// pixels that show it.
+// pixels that show it. The spinning hole splits by its paths instead
+// (METRIC_SPLITS_RARE): the trace pass carries the common ones and lists
+// the 2x2 quads where a path needs the rest; the second pass redoes those
+// quads whole, ray differentials and all.
 
 #if !defined(GEODESIC_AOV) && !defined(NO_QUAD)
 // Ray differentials from 2x2 quads of pixels (see main).
@@ -62,7 +65,9 @@ layout(std430, binding = 7) buffer DiskDispatch {
 
 #ifdef DISK_SPLIT
 // The trace pass: lists this SIMD group's pixels that need the disk pass
-// (one atomic per group; the dispatch grows to cover the list).
+// (one atomic per group; the dispatch grows to cover the list). Whole quads
+// (a need the same in all four lanes) stay four consecutive entries from a
+// multiple of four, so a listed quad is a subgroup quad again there.
 void list_for_disk(uvec2 px, bool need) {
     uvec4 ballot = subgroupBallot(need);
     uint n = subgroupBallotBitCount(ballot);
@@ -97,7 +102,7 @@ void disk_pass() {
 void main() {
     read_params();  // first, outside any branch (params.glsl)
 #ifdef DISK_SPLIT
-    if (DISK_STAGE == DISK_STAGE_DISK) {
+    if (!METRIC_SPLITS_RARE && DISK_STAGE == DISK_STAGE_DISK) {
         disk_pass();
         return;
     }
@@ -113,7 +118,19 @@ void main() {
     uint quad = li >> 2u;
     uvec2 in_quad = uvec2(li & 1u, (li >> 1u) & 1u);
     uvec2 px_raw = gl_WorkGroupID.xy * 8u + 2u * uvec2(quad & 3u, quad >> 2u) + in_quad;
-    bool inside = px_raw.x < w && px_raw.y < hgt;
+    bool listed = true;
+#ifdef DISK_SPLIT
+    if (METRIC_SPLITS_RARE && DISK_STAGE == DISK_STAGE_DISK) {
+        // The second pass of a split by paths: the listed quads, four
+        // consecutive invocations each (lanes past the list's end trace a
+        // pixel and store nothing).
+        uint i = (gl_WorkGroupID.y * DISK_ROW + gl_WorkGroupID.x) * 64u + li;
+        listed = i < disk_list.count;
+        uint packed = disk_list.px[min(i, disk_list.count - 1u)];
+        px_raw = uvec2(packed & 0xffffu, packed >> 16u);
+    }
+#endif
+    bool inside = listed && px_raw.x < w && px_raw.y < hgt;
     uvec2 px = min(px_raw, uvec2(w - 1u, hgt - 1u));
 #else
     uvec2 px = gl_GlobalInvocationID.xy;
@@ -194,7 +211,18 @@ void main() {
     }
     color = hit.glow + hit.trans * color;
 #ifdef DISK_SPLIT
-    if (DISK_STAGE == DISK_STAGE_TRACE) list_for_disk(px, hit.disk_ahead && inside && ray.valid);
+    if (METRIC_SPLITS_RARE) {
+        // The whole quad if any of its lanes was deferred and one lies in
+        // the image (its lanes past the edge listed too, storing nothing).
+        bool q = hit.deferred;
+        q = q || subgroupQuadSwapHorizontal(q);
+        q = q || subgroupQuadSwapVertical(q);
+        bool any_inside = inside || subgroupQuadSwapHorizontal(inside);
+        any_inside = any_inside || subgroupQuadSwapVertical(any_inside);
+        if (DISK_STAGE == DISK_STAGE_TRACE) list_for_disk(px_raw, q && any_inside);
+    } else if (DISK_STAGE == DISK_STAGE_TRACE) {
+        list_for_disk(px, hit.deferred && inside && ray.valid);
+    }
 #endif
 #ifdef RAY_DIFFERENTIALS
     if (!inside) return;

@@ -12,8 +12,9 @@ pub enum RaymarchBuild {
     NoQuad,
     /// The geodesic AOV (`GEODESIC_AOV`).
     Aov,
-    /// The split thin-disk stages (`DISK_SPLIT`: the trace pass that lists
-    /// disk pixels and the indirect disk pass); closed-form metric only.
+    /// The split stages (`DISK_SPLIT`: the trace pass that lists pixels and
+    /// the indirect pass over them): the thin disk around a non-rotating
+    /// hole, the rarer paths around a spinning one.
     Split,
 }
 
@@ -25,7 +26,7 @@ macro_rules! spv {
 
 /// The ray march compiled for one metric (`shaders/include/metric.glsl`,
 /// the define build.rs sets) and one build; `None` for the split stages of
-/// a metric other than the closed form. The spinning hole has two: its
+/// a metric with no closed form. The spinning hole has two: its
 /// per-ray constants in 64-bit floats (`kerr_f64`, where the device has
 /// them) or in 32-bit ones (`KERR_F32_ROOTS`).
 pub fn raymarch(path: GpuPath, build: RaymarchBuild, kerr_f64: bool) -> Option<&'static [u8]> {
@@ -35,6 +36,7 @@ pub fn raymarch(path: GpuPath, build: RaymarchBuild, kerr_f64: bool) -> Option<&
         (Kerr, Beauty) if !kerr_f64 => spv!("raymarch_kerr_f32"),
         (Kerr, NoQuad) if !kerr_f64 => spv!("raymarch_kerr_f32_no_quad"),
         (Kerr, Aov) if !kerr_f64 => spv!("raymarch_kerr_f32_aov"),
+        (Kerr, Split) if !kerr_f64 => spv!("raymarch_kerr_f32_split"),
         (ClosedForm, Beauty) => spv!("raymarch_schwarzschild"),
         (ClosedForm, NoQuad) => spv!("raymarch_schwarzschild_no_quad"),
         (ClosedForm, Aov) => spv!("raymarch_schwarzschild_aov"),
@@ -48,7 +50,8 @@ pub fn raymarch(path: GpuPath, build: RaymarchBuild, kerr_f64: bool) -> Option<&
         (Kerr, Beauty) => spv!("raymarch_kerr"),
         (Kerr, NoQuad) => spv!("raymarch_kerr_no_quad"),
         (Kerr, Aov) => spv!("raymarch_kerr_aov"),
-        (Straight | Integrated | Kerr, Split) => return None,
+        (Kerr, Split) => spv!("raymarch_kerr_split"),
+        (Straight | Integrated, Split) => return None,
     })
 }
 

@@ -18,7 +18,8 @@ struct Hit {
     float g;    // redshift at a disk hit
     vec3 glow;  // light gathered from the disk on the way
     float trans; // transmittance of that disk (1: clear)
-    bool disk_ahead; // the trace pass left thin-disk crossings to the disk pass
+    bool deferred; // the split's trace pass left this path to its second pass (the thin
+                   // disk's crossings; a spinning hole's rarer paths: metric.glsl)
     float delay; // LIGHT_DELAY: the light's travel time from the disk hit to the camera
                  // (scene units, c = 1), for paths that leave the disk's shading to main
 };
@@ -33,7 +34,7 @@ Hit hit_start(int outcome, vec3 pos, vec3 dir) {
     hit.g = 0.0;
     hit.glow = vec3(0.0);
     hit.trans = 1.0;
-    hit.disk_ahead = false;
+    hit.deferred = false;
     hit.delay = 0.0;
     return hit;
 }

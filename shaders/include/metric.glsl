@@ -8,6 +8,10 @@
 //       the sky, with the disk's light gathered on the way (hit.glsl);
 //   const bool METRIC_SHADES_DISK  metric_trace adds the thin disk's light
 //       itself (else the caller shades an opaque disk at hit.pos);
+//   const bool METRIC_SPLITS_RARE  in the split builds (raymarch.comp, a
+//       CPU device): the trace pass takes the common paths only and flags
+//       (hit.deferred) the rest, whose 2x2 quads the second pass redoes
+//       whole (else the second pass adds the thin disk in front);
 //   StaticFrame metric_static_frame(vec3 origin)  the frame at rest at any
 //       origin that the observer's velocity is measured in (its radial
 //       direction and lapse; static_frame.glsl), so each ray of a camera

@@ -20,6 +20,7 @@ NON_ROTATING_METRIC(false)
 // gathered along the part of the line inside the slab, in chords of at most
 // 16 samples (the step-by-step path's spacing), up to the horizon.
 const bool METRIC_SHADES_DISK = false;
+const bool METRIC_SPLITS_RARE = false;  // (no split build)
 
 Hit metric_trace(vec3 x, vec3 d) {
     Hit hit = hit_start(OUT_ESCAPED, x, d);

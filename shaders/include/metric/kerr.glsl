@@ -40,6 +40,16 @@
 #include "lightpath.glsl"
 #include "metric/static_frame.glsl"
 
+// The split ray march (raymarch.comp, on a CPU device, which runs every
+// branch for every pixel, taken or not): its trace pass carries the common
+// paths only, and leaves the rest (a polar motion that never crosses the
+// equator, the radial case 4, and I_phi anywhere but on a case-2 path whose
+// turning point lies outside the horizon: in most views the shadow's
+// pixels whose path meets the disk first) to the second pass, which redoes
+// their 2x2 quads with the whole of this file.
+const bool METRIC_SPLITS_RARE = true;
+const bool KERR_COMMON_ONLY = DISK_STAGE == DISK_STAGE_TRACE;
+
 #ifdef KERR_F32_ROOTS
 #define kreal float
 #define kvec3 vec3
@@ -74,12 +84,25 @@ float kerr_rc(float x, float y) {
         float e = d / x;
         r = inversesqrt(x) * (1.0 + e * (-1.0 / 3.0 + e * (0.2 + e * (-1.0 / 7.0 + e * (1.0 / 9.0)))));
     } else if (d > 0.0) {
-        float v = d < x ? atan_precise(sqrt(d / x)) : HALF_PI - atan_precise(sqrt(x / d));
-        r = v * inversesqrt(d);
+        // (One atan for both sides: on a CPU driver both would run.)
+        float v = atan_precise(d < x ? sqrt(d / x) : sqrt(x / d));
+        r = (d < x ? v : HALF_PI - v) * inversesqrt(d);
     } else {
         r = asinh_precise(sqrt(-d / y)) * inversesqrt(-d);
     }
     return w * r;
+}
+
+// R_C(x, y) for y >= x (kerr_pi_neg's partner form): kerr_rc without its
+// principal value and atanh.
+float kerr_rc_above(float x, float y) {
+    float d = y - x;
+    if (d < 0.02 * x) {
+        float e = d / x;
+        return inversesqrt(x) * (1.0 + e * (-1.0 / 3.0 + e * (0.2 + e * (-1.0 / 7.0 + e * (1.0 / 9.0)))));
+    }
+    float v = atan_precise(d < x ? sqrt(d / x) : sqrt(x / d));
+    return (d < x ? v : HALF_PI - v) * inversesqrt(d);
 }
 
 // R_C(1, 1 + e) for |e| < 0.03 (every duplication turn of R_J after the
@@ -97,6 +120,13 @@ float kerr_rc_first(float e) {
     if (abs(e) < 0.03) return kerr_rc_series(e);
     float t = sqrt(abs(e)), u = t * inversesqrt(1.0 + e);
     return (e > 0.0 ? asin_precise(u) : asinh_precise(u)) / t;
+}
+
+// The same for e >= 0 (p at least x, y and z): atan only.
+float kerr_rc_first_pos(float e) {
+    if (e < 0.03) return kerr_rc_series(e);
+    float t = sqrt(e), u = t * inversesqrt(1.0 + e);
+    return asin_precise(u) / t;
 }
 
 // Carlson's series of R_J at the end of the duplication (DLMF 19.36.2),
@@ -120,47 +150,84 @@ float kerr_rj_tail(float x, float y, float z, float p, float a, float fac) {
 // sqrt x_i) and e = prod(sqrt p - sqrt x_i) / d, so |e| < 1, and it falls
 // some 64-fold a turn: the first turn takes atan or atanh, the rest the
 // series. Until the arguments are within 0.1 of their mean; then the
-// fifth-order series, whose error there is below 3e-8.
-float kerr_rj(float x, float y, float z, float p) {
-    float sum = 0.0, fac = 1.0, a;
-    [[dont_unroll]] for (int i = 0; i < 16; ++i) {
+// fifth-order series, whose error there is below 3e-8. The first turn
+// comes before the loop (on a CPU driver a loop's body runs all of itself
+// every turn, so atan and atanh inside it would run every turn). e_pos: p
+// is known to be at least x, y and z (then e >= 0: no atanh).
+float kerr_rj(float x, float y, float z, float p, bool e_pos) {
+    float sum, fac = 1.0, a;
+    {
         float sx = sqrt(x), sy = sqrt(y), sz = sqrt(z), sp = sqrt(p);
         float l = sx * (sy + sz) + sy * sz;
         float id = 1.0 / ((sp + sx) * (sp + sy) * (sp + sz));
         float e = (sp - sx) * (sp - sy) * (sp - sz) * id;
-        sum += fac * id * (i == 0 ? kerr_rc_first(e) : kerr_rc_series(e));
+        sum = id * (e_pos ? kerr_rc_first_pos(e) : kerr_rc_first(e));
+        fac = 0.25;
+        x = 0.25 * (x + l);
+        y = 0.25 * (y + l);
+        z = 0.25 * (z + l);
+        p = 0.25 * (p + l);
+        a = 0.2 * (x + y + z + p + p);
+    }
+    bool done = max(max(abs(a - x), abs(a - y)), max(abs(a - z), abs(a - p))) < 0.1 * a;
+    [[dont_unroll]] for (int i = 1; i < 16 && !done; ++i) {
+        float sx = sqrt(x), sy = sqrt(y), sz = sqrt(z), sp = sqrt(p);
+        float l = sx * (sy + sz) + sy * sz;
+        float id = 1.0 / ((sp + sx) * (sp + sy) * (sp + sz));
+        float e = (sp - sx) * (sp - sy) * (sp - sz) * id;
+        sum += fac * id * kerr_rc_series(e);
         fac *= 0.25;
         x = 0.25 * (x + l);
         y = 0.25 * (y + l);
         z = 0.25 * (z + l);
         p = 0.25 * (p + l);
         a = 0.2 * (x + y + z + p + p);
-        if (max(max(abs(a - x), abs(a - y)), max(abs(a - z), abs(a - p))) < 0.1 * a) break;
+        done = max(max(abs(a - x), abs(a - y)), max(abs(a - z), abs(a - p))) < 0.1 * a;
     }
     return kerr_rj_tail(x, y, z, p, a, fac) + 6.0 * sum;
+}
+
+// How far each of R_J's arguments lies from their mean, for two p.
+vec2 kerr_spread2(float x, float y, float z, vec2 p, vec2 a) {
+    return max(vec2(max(max(abs(a.x - x), abs(a.x - y)), abs(a.x - z)), max(max(abs(a.y - x), abs(a.y - y)), abs(a.y - z))),
+               abs(a - p));
 }
 
 // R_J for two values of p at once: x, y, z duplicate the same whatever p
 // (the two horizons of one point of a path share them).
 vec2 kerr_rj2(float x, float y, float z, vec2 p) {
-    vec2 sum = vec2(0.0), a;
+    vec2 sum, a;
     float fac = 1.0;
-    [[dont_unroll]] for (int i = 0; i < 16; ++i) {
+    // The first turn before the loop, as in kerr_rj.
+    {
         float sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
         vec2 sp = sqrt(p);
         float l = sx * (sy + sz) + sy * sz;
         vec2 id = 1.0 / ((sp + sx) * (sp + sy) * (sp + sz));
         vec2 e = (sp - sx) * (sp - sy) * (sp - sz) * id;
-        sum += fac * id * (i == 0 ? vec2(kerr_rc_first(e.x), kerr_rc_first(e.y)) : kerr_rc_series(e));
+        sum = id * vec2(kerr_rc_first(e.x), kerr_rc_first(e.y));
+        fac = 0.25;
+        x = 0.25 * (x + l);
+        y = 0.25 * (y + l);
+        z = 0.25 * (z + l);
+        p = 0.25 * (p + l);
+        a = 0.2 * (x + y + z + p + p);
+    }
+    bool done = all(lessThan(kerr_spread2(x, y, z, p, a), 0.1 * a));
+    [[dont_unroll]] for (int i = 1; i < 16 && !done; ++i) {
+        float sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
+        vec2 sp = sqrt(p);
+        float l = sx * (sy + sz) + sy * sz;
+        vec2 id = 1.0 / ((sp + sx) * (sp + sy) * (sp + sz));
+        vec2 e = (sp - sx) * (sp - sy) * (sp - sz) * id;
+        sum += fac * id * kerr_rc_series(e);
         fac *= 0.25;
         x = 0.25 * (x + l);
         y = 0.25 * (y + l);
         z = 0.25 * (z + l);
         p = 0.25 * (p + l);
         a = 0.2 * (x + y + z + p + p);
-        vec2 spread = max(vec2(max(max(abs(a.x - x), abs(a.x - y)), abs(a.x - z)), max(max(abs(a.y - x), abs(a.y - y)), abs(a.y - z))),
-                          abs(a - p));
-        if (all(lessThan(spread, 0.1 * a))) break;
+        done = all(lessThan(kerr_spread2(x, y, z, p, a), 0.1 * a));
     }
     return vec2(kerr_rj_tail(x, y, z, p.x, a.x, fac), kerr_rj_tail(x, y, z, p.y, a.y, fac)) + 6.0 * sum;
 }
@@ -180,7 +247,7 @@ float kerr_pi(float n, KerrPoint e, float m, float mc) {
     float s2 = e.s * e.s, d2 = mc + m * e.c2;
     bool pv = n > 1.0;
     float nn = pv ? m / n : n;
-    float t = nn * (1.0 / 3.0) * s2 * e.s * kerr_rj(e.c2, d2, 1.0, 1.0 - nn * s2);
+    float t = nn * (1.0 / 3.0) * s2 * e.s * kerr_rj(e.c2, d2, 1.0, 1.0 - nn * s2, false);
     if (pv) {
         float pole = 1.0 - n * s2;
         pole = abs(pole) < 1e-6 ? (pole < 0.0 ? -1e-6 : 1e-6) : pole;
@@ -195,8 +262,8 @@ float kerr_pi_neg(float bn, KerrPoint e, float m, float mc) {
     float s2 = e.s * e.s, d2 = mc + m * e.c2;
     bool partner = bn > sqrt(m);
     float np = partner ? m / bn : bn;
-    float t = np * (1.0 / 3.0) * s2 * e.s * kerr_rj(e.c2, d2, 1.0, 1.0 + np * s2);
-    if (partner) return e.s * kerr_rc(e.c2 * d2, (1.0 + bn * s2) * (1.0 + np * s2)) + t;
+    float t = np * (1.0 / 3.0) * s2 * e.s * kerr_rj(e.c2, d2, 1.0, 1.0 + np * s2, true);
+    if (partner) return e.s * kerr_rc_above(e.c2 * d2, (1.0 + bn * s2) * (1.0 + np * s2)) + t;
     return e.f - t;
 }
 
@@ -204,7 +271,7 @@ float kerr_pi_neg(float bn, KerrPoint e, float m, float mc) {
 float kerr_pi_complete(float n, float kk, float m, float mc) {
     bool pv = n > 1.0;
     float nn = pv ? m / n : n;
-    float t = nn * (1.0 / 3.0) * kerr_rj(0.0, mc, 1.0, 1.0 - nn);
+    float t = nn * (1.0 / 3.0) * kerr_rj(0.0, mc, 1.0, 1.0 - nn, false);
     return pv ? -t : kk + t;
 }
 
@@ -270,6 +337,7 @@ struct KerrRadial {
     float s_r;
     float i_phi_end;     // case 4: I_phi to the end (quadrature)
     vec2 rh, ah;         // the horizons r+, r- and a A+-, their weights in I_phi
+    vec2 q_cam;          // case 2 (horizons inside r4): the camera's part of I_phi's R_J
     // The R_F arguments (cos^2, delta^2) and sin^2 of the camera's point
     // and of the path's end (infinity or the horizon), and their folds.
     vec3 rf_cam, rf_end;
@@ -403,7 +471,8 @@ KerrRadial kerr_radial(kreal a, kreal lam, kreal eta, kreal r_o, float s_r) {
         k.rate = 1.0;
         float af = float(a), lf = float(lam), ef = float(eta);
         float uo = float(1.0 / r_o), tau = 0.0, iphi = 0.0;
-        [[dont_unroll]] for (int i = 0; i < 16; ++i) {
+        // (None in the split's trace pass, which defers case 4.)
+        [[dont_unroll]] for (int i = 0; i < (KERR_COMMON_ONLY ? 0 : 16); ++i) {
             vec2 xw = kerr_gl_node(i);
             float u = 0.5 * uo * (xw.x + 1.0), ww = 0.5 * uo * xw.y;
             float rt = inversesqrt(kerr_f_u(u, af, lf, ef));
@@ -495,7 +564,7 @@ float kerr_j(KerrRadial k, float rh, float tau, KerrPoint e0, KerrPoint e1) {
         [[dont_unroll]] for (int i = 0; i < 2; ++i) {
             KerrPoint e = i == 0 ? e0 : e1;
             float s2 = e.s * e.s;
-            q += (i == 0 ? -e.sgn : e.sgn) * s2 * e.s * kerr_rj(e.c2, k.mc + k.m * e.c2, 1.0, 1.0 - n * s2);
+            q += (i == 0 ? -e.sgn : e.sgn) * s2 * e.s * kerr_rj(e.c2, k.mc + k.m * e.c2, 1.0, 1.0 - n * s2, false);
         }
         return tau / r4h - k.r43 * k.r41 / (3.0 * k.rate * k.r31 * r4h * r4h) * q;
     }
@@ -526,8 +595,18 @@ float kerr_j(KerrRadial k, float rh, float tau, KerrPoint e0, KerrPoint e1) {
     return c1 * tau + k.s_r / k.rate * c2 * (rr[1] - rr[0]);
 }
 
+// The camera's part of kerr_i_phi's case-2 form, once for the path (the
+// thin disk's light may stop it twice).
+void kerr_i_phi_start(inout KerrRadial k) {
+    vec2 r4h = k.r4 - k.rh;
+    vec2 n = k.r41 * (k.r3 - k.rh) / (k.r31 * r4h);
+    KerrPoint e = k.cam;
+    float s2 = e.s * e.s;
+    k.q_cam = -e.sgn * s2 * e.s * kerr_rj2(e.c2, k.mc + k.m * e.c2, 1.0, 1.0 - n * s2);
+}
+
 // I_phi(tau): the integral of a (2 r - a lambda) / Delta over Mino time,
-// e1 the path's point at tau.
+// e1 the path's point at tau (kerr_i_phi_start first).
 float kerr_i_phi(KerrRadial k, float a, float lam, float tau, KerrPoint e1) {
     if (a == 0.0) return 0.0;
     if (k.kcase == 4) return k.i_phi_end;
@@ -536,14 +615,11 @@ float kerr_i_phi(KerrRadial k, float a, float lam, float tau, KerrPoint e1) {
         // rearranged form for both at once, R_J sharing its duplication.
         vec2 r4h = k.r4 - k.rh;
         vec2 n = k.r41 * (k.r3 - k.rh) / (k.r31 * r4h);
-        vec2 q = vec2(0.0);
-        [[dont_unroll]] for (int i = 0; i < 2; ++i) {
-            KerrPoint e = i == 0 ? k.cam : e1;
-            float s2 = e.s * e.s;
-            q += (i == 0 ? -e.sgn : e.sgn) * s2 * e.s * kerr_rj2(e.c2, k.mc + k.m * e.c2, 1.0, 1.0 - n * s2);
-        }
+        float s2 = e1.s * e1.s;
+        vec2 q = k.q_cam + e1.sgn * s2 * e1.s * kerr_rj2(e1.c2, k.mc + k.m * e1.c2, 1.0, 1.0 - n * s2);
         return dot(k.ah, tau / r4h - k.r43 * k.r41 / (3.0 * k.rate * k.r31 * r4h * r4h) * q);
     }
+    if (KERR_COMMON_ONLY) return 0.0;  // (metric_trace deferred the path)
     float sum = 0.0;
     // One loop over the two horizons: one copy of kerr_j in the shader.
     [[dont_unroll]] for (int i = 0; i < 2; ++i) {
@@ -568,6 +644,7 @@ struct KerrAngular {
     float psi0;                         // psi at the camera (ordinary)
     vec2 star;                          // sin^2, cos^2 of the camera's point (K - F_o; vortical F)
     KerrPoint cam;                      // the camera's point of psi (v)
+    float phi_comp, phi_p0;             // G_phi's complete Pi and the camera's (kerr_angular_phi_start)
     Agm agm;
 };
 
@@ -611,7 +688,7 @@ KerrAngular kerr_angular(kreal a, kreal lam, kreal eta, kreal c_o, kreal theta_o
         g.complement = cos2 < 0.5 * y;
         g.star = vec2(float(cos2 / y), float(mc * sin2 / y));
         g.rf = g.complement ? vec3(g.star.y, float(mc / y), g.star.x) : vec3(float(cos2), float(y), float(sin2));
-    } else {
+    } else if (!KERR_COMMON_ONLY) {  // (the split's trace pass defers it)
         kreal a2up = (s - h) / 2.0, a2um = (-h - s) / 2.0;
         kreal up = a2up / (a * a), um = a2um / (a * a);
         g.u_plus = float(up);
@@ -670,30 +747,42 @@ float kerr_cos_at(KerrAngular g, float tau) {
     return kerr_cos_of(g, kerr_point_any((g.vortical ? g.v0 : g.psi0) + g.w * tau, g.agm, g.kk));
 }
 
+// G_phi's parts fixed for the path, once (the thin disk's light may stop
+// it twice): the complete Pi (for each period of the polar motion crossed)
+// and Pi at the camera's point.
+void kerr_angular_phi_start(inout KerrAngular g) {
+    KerrPoint e0 = g.cam;
+    float pi0;
+    if (!KERR_COMMON_ONLY && g.vortical) {
+        float n = g.m / (1.0 - g.u_minus);
+        g.phi_comp = kerr_pi_complete(n, g.kk, g.m, g.mc);
+        pi0 = kerr_pi(n, e0, g.m, g.mc);
+    } else {
+        float n = g.u_plus / g.one_m_up;
+        g.phi_comp = kerr_pi_neg_complete(n, g.kk, g.m, g.mc);
+        pi0 = kerr_pi_neg(n, e0, g.m, g.mc);
+    }
+    g.phi_p0 = (e0.j != 0.0 ? 2.0 * e0.j * g.phi_comp : 0.0) + e0.sgn * pi0;
+}
+
 // cos theta and lambda G_phi (lambda times the integral of 1 / sin^2 theta
-// over Mino time) at Mino time tau.
+// over Mino time) at Mino time tau (kerr_angular_phi_start first).
 vec2 kerr_angular_at(KerrAngular g, float lam, float tau) {
     float u0 = g.vortical ? g.v0 : g.psi0;
     float u1 = u0 + g.w * tau;
     KerrPoint e1 = kerr_point_any(u1, g.agm, g.kk);
     float two_k = 2.0 * g.kk;
     float cos_t = kerr_cos_of(g, e1);
-    if (g.vortical) {
+    if (!KERR_COMMON_ONLY && g.vortical) {
         if (abs(lam) < 1e-12) return vec2(cos_t, PI * (floor((u1 - g.kk) / two_k) - floor((u0 - g.kk) / two_k)));
         float n = g.m / (1.0 - g.u_minus);
-        KerrPoint e0 = g.cam;
-        float comp = e0.j != 0.0 || e1.j != 0.0 ? kerr_pi_complete(n, g.kk, g.m, g.mc) : 0.0;
-        float p0 = 2.0 * e0.j * comp + e0.sgn * kerr_pi(n, e0, g.m, g.mc);
-        float p1 = 2.0 * e1.j * comp + e1.sgn * kerr_pi(n, e1, g.m, g.mc);
-        return vec2(cos_t, g.coef * ((u1 - u0) + g.u_minus / (1.0 - g.u_minus) * (p1 - p0)));
+        float p1 = (e1.j != 0.0 ? 2.0 * e1.j * g.phi_comp : 0.0) + e1.sgn * kerr_pi(n, e1, g.m, g.mc);
+        return vec2(cos_t, g.coef * ((u1 - u0) + g.u_minus / (1.0 - g.u_minus) * (p1 - g.phi_p0)));
     }
     if (abs(lam) < 1e-12) return vec2(cos_t, PI * (floor(u1 / two_k) - floor(u0 / two_k)));
     float n = g.u_plus / g.one_m_up;
-    KerrPoint e0 = g.cam;
-    float comp = e0.j != 0.0 || e1.j != 0.0 ? kerr_pi_neg_complete(n, g.kk, g.m, g.mc) : 0.0;
-    float p0 = 2.0 * e0.j * comp + e0.sgn * kerr_pi_neg(n, e0, g.m, g.mc);
-    float p1 = 2.0 * e1.j * comp + e1.sgn * kerr_pi_neg(n, e1, g.m, g.mc);
-    return vec2(cos_t, g.coef * (p1 - p0));
+    float p1 = (e1.j != 0.0 ? 2.0 * e1.j * g.phi_comp : 0.0) + e1.sgn * kerr_pi_neg(n, e1, g.m, g.mc);
+    return vec2(cos_t, g.coef * (p1 - g.phi_p0));
 }
 
 // --------------------------------------------------------------- the volumetric disk
@@ -812,9 +901,6 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
     float r_h = rad.rh.x;
     int n0 = in_slab ? -1 : 0;
     // The polar part's constants (ordinary motion: eta > 0).
-    float n_th = ang.u_plus / ang.one_m_up;
-    float comp = kerr_pi_neg_complete(n_th, ang.kk, ang.m, ang.mc);
-    float p0 = 2.0 * ang.cam.j * comp + ang.cam.sgn * kerr_pi_neg(n_th, ang.cam, ang.m, ang.mc);
     // Where the radial part of the azimuth (from the camera's) is known.
     float t_known = 0.0, phr_known = 0.0;
     [[dont_unroll]] for (int j = 0; j < VOLUME_CROSSINGS; ++j) {
@@ -848,7 +934,7 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
         float phr0 = phr_known + gh * gap;
         // The polar part at the window's start in closed form (near the
         // axis its rate is a narrow spike no rule would follow).
-        float pht0 = -kerr_polar_phi(ang, lam, ta, comp, p0);
+        float pht0 = -kerr_polar_phi(ang, lam, ta, ang.phi_comp, ang.phi_p0);
         // Five points a step h apart: r and theta at the first and the
         // step in closed form, the rest by the addition theorem.
         float h = 0.25 * (tb - ta);
@@ -989,6 +1075,17 @@ Hit metric_trace(vec3 x, vec3 d) {
     if (rad.kcase != 4) kerr_radial_ends(rad, f.x, f.y);
     else kerr_radial_ends(rad, 0.0, 0.0);
     kerr_angular_start(ang, f.z);
+    // The split's trace pass: the rarer paths to the second pass.
+    if (KERR_COMMON_ONLY && (rad.kcase == 4 || eta < 0.0)) {
+        hit.deferred = true;
+        return hit;
+    }
+#ifndef EXP_NOIPHI
+    kerr_i_phi_start(rad);
+#endif
+#ifndef EXP_NOANG
+    kerr_angular_phi_start(ang);
+#endif
     float af = float(a), lamf = float(lam);
     // The shifts are measured by the camera's ZAMO (disk.glsl, volume.glsl).
     kerr_zamo_g = float((1.0 - omega * lam) / alpha);
@@ -1007,15 +1104,24 @@ Hit metric_trace(vec3 x, vec3 d) {
     // then its light is added here, weighted by its opacity, and the path
     // goes on to the next crossing (drawn opaque by the ray march) or the
     // sky, as the non-rotating path does.
+#ifdef EXP_THIN1
+    const int NSTOP = 1;
+#else
+    const int NSTOP = THIN_CROSSINGS;
+#endif
     int from = 0;
     float cpf = float(cp), spf = float(sp);
-    [[dont_unroll]] for (int stop = 0; stop < THIN_CROSSINGS; ++stop) {
+    [[dont_unroll]] for (int stop = 0; stop < NSTOP; ++stop) {
         bool on_disk = false;
         float t = rad.tau_end, rc = 0.0;
         KerrPoint end = KerrPoint(0.0, 1.0, 0.0, 1.0, 0.0, false);
         if (DISK_KIND == DISK_THIN && eta > 0.0 && rad.kcase != 4) {
             float r_in = float(to_m) * P.disk.inner, r_out = float(to_m) * P.disk.outer;
+#ifdef EXP_NOCROSS
+            [[dont_unroll]] for (int n = from; n < 0; ++n) {
+#else
             [[dont_unroll]] for (int n = from; n < 8; ++n) {
+#endif
                 float tc = kerr_crossing_tau(ang, n);
                 if (tc >= rad.tau_end) break;
                 KerrPoint e = kerr_radial_point(rad, tc);
@@ -1033,10 +1139,22 @@ Hit metric_trace(vec3 x, vec3 d) {
         }
         if (!on_disk && rad.captured) return hit;
         if (!on_disk) end = rad.end;
+        if (KERR_COMMON_ONLY && af != 0.0 && !(rad.kcase == 2 && rad.rh.x <= rad.r4)) {
+            hit.deferred = true;  // I_phi needs kerr_j: to the second pass
+            return hit;
+        }
         // The azimuth there: phi = phi_o + dphi (an equatorial ray, eta = 0
         // in the plane, keeps theta = pi/2 and lambda G_phi = lambda tau).
+#ifdef EXP_NOANG
+        vec2 ct = vec2(0.3, lamf * t);
+#else
         vec2 ct = eta != 0.0 ? kerr_angular_at(ang, lamf, t) : vec2(0.0, lamf * t);
+#endif
+#ifdef EXP_NOIPHI
+        float dphi = - ct.y;
+#else
         float dphi = -kerr_i_phi(rad, af, lamf, t, end) - ct.y;
+#endif
         vec2 cs = cos_sin_precise(dphi);
         float cph = cpf * cs.x - spf * cs.y, sph = spf * cs.x + cpf * cs.y;
         if (on_disk) {

@@ -118,6 +118,8 @@ bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 no
 // u there straight from the formula; escape and capture come from the total
 // sweep; no steps.
 const bool METRIC_SHADES_DISK = true;
+// The split's second pass adds the thin disk in front (raymarch.comp).
+const bool METRIC_SPLITS_RARE = false;
 
 Hit metric_trace(vec3 x, vec3 d) {
     Hit hit = hit_start(OUT_NO_STEPS, vec3(0.0), d);
@@ -164,8 +166,8 @@ Hit metric_trace(vec3 x, vec3 d) {
             float next = phi0 <= 1e-6 ? phi0 + PI : phi0;  // the next crossing ahead
             if (DISK_STAGE == DISK_STAGE_TRACE) {
                 // Left to the disk pass: any crossing in the windows.
-                hit.disk_ahead = min(first_crossing_in(path, path.win_a, next),
-                                     first_crossing_in(path, path.win_b, next)) < 1e29;
+                hit.deferred = min(first_crossing_in(path, path.win_a, next),
+                                   first_crossing_in(path, path.win_b, next)) < 1e29;
             } else {
                 vec3 node = (nb * e1 - na * e2) / tilt;      // cos(phi0) e1 + sin(phi0) e2
                 float az0 = THIN_STRUCTURE ? disk_azimuth(c + node) : 0.0;

@@ -60,6 +60,7 @@ vec3 plane_crossing(vec3 x0, vec3 v0, vec3 x1, vec3 v1, float h) {
 }
 
 const bool METRIC_SHADES_DISK = false;
+const bool METRIC_SPLITS_RARE = false;  // (no split build)
 
 Hit metric_trace(vec3 x, vec3 v) {
     Hit hit = hit_start(OUT_NO_STEPS, vec3(0.0), v);

@@ -120,6 +120,9 @@ pub const SPLIT_MAX_DISK_SHARE: f64 = 0.3;
 /// [`crate::render::Features::splits`], where the device splits at all.)
 pub fn split_pays(scene: &Scene, width: u32, height: u32) -> bool {
     let spacetime = Spacetime::of(scene);
+    if spacetime.gpu_path() == GpuPath::Kerr {
+        return true;
+    }
     if spacetime.gpu_path() != GpuPath::ClosedForm || scene.disk.kind != DiskKind::Thin {
         return false;
     }
@@ -218,7 +221,12 @@ impl Variant {
     /// disk passes for one hole with a thin disk when `split` (the device
     /// has subgroup ballots), else itself.
     pub fn stages(self, split: bool) -> Vec<Variant> {
-        if split && self.path == GpuPath::ClosedForm && !self.aov && self.disk == glsl::DISK_THIN {
+        let splits = match self.path {
+            GpuPath::ClosedForm => self.disk == glsl::DISK_THIN,
+            GpuPath::Kerr => true,
+            GpuPath::Straight | GpuPath::Integrated => false,
+        };
+        if split && splits && !self.aov {
             [glsl::DISK_STAGE_TRACE, glsl::DISK_STAGE_DISK]
                 .map(|disk_stage| Variant { disk_stage, ..self })
                 .to_vec()
@@ -398,9 +406,10 @@ pub fn add_raymarch<'a>(
         return hdr;
     };
 
-    // The disk pass's work list (a count, then one packed pixel each) and
-    // its indirect dispatch, emptied first.
-    let pixels = u64::from(width) * u64::from(height);
+    // The disk pass's work list (a count, then one packed pixel each; whole
+    // 2x2 quads for a split by paths, so up to the size rounded up to even)
+    // and its indirect dispatch, emptied first.
+    let pixels = u64::from(width.next_multiple_of(2)) * u64::from(height.next_multiple_of(2));
     let mut work = DiskWork {
         list: graph.create_buffer("disk list", 4 + 4 * pixels),
         dispatch: graph.create_buffer("disk dispatch", 16),
@@ -457,10 +466,10 @@ fn add_stage<'a>(
 ) {
     let (width, height) = (hdr.desc.width, hdr.desc.height);
     let indirect = matches!(stage, Stage::Disk(_));
-    let mut pass = graph.add_pass(if indirect {
-        "raymarch disk"
-    } else {
-        "raymarch"
+    let mut pass = graph.add_pass(match (indirect, variant.path) {
+        (false, _) => "raymarch",
+        (true, GpuPath::Kerr) => "raymarch rare",
+        (true, _) => "raymarch disk",
     });
     let sampled = Access::ComputeSampledRead;
     let block = pass.read_buffer(params, Access::ComputeStorageRead);
