@@ -512,10 +512,12 @@ void kerr_radial_ends(inout KerrRadial k, float f_cam, float f_end) {
 }
 
 // The point of the path at Mino time tau (its sn, cn and F).
+// (One Jacobi evaluation for every case: on a CPU driver a second call in
+// a branch would run for every path.)
 KerrPoint kerr_radial_point(KerrRadial k, float tau) {
-    if (k.kcase == 3) return kerr_point_2k(k.x0 + k.s_r * k.rate * tau, 1.0, k.agm, k.kk);
-    float x = k.x0 + k.rate * tau;
-    return kerr_point_2k(abs(x), x < 0.0 ? -1.0 : 1.0, k.agm, k.kk);
+    bool c3 = k.kcase == 3;
+    float x = k.x0 + (c3 ? k.s_r : 1.0) * k.rate * tau;
+    return kerr_point_2k(c3 ? x : abs(x), c3 || x >= 0.0 ? 1.0 : -1.0, k.agm, k.kk);
 }
 
 float kerr_r_of(KerrRadial k, KerrPoint e) {
@@ -1016,7 +1018,7 @@ StaticFrame metric_static_frame(vec3 origin) {
     return f;
 }
 
-const bool METRIC_SHADES_DISK = false;
+const bool METRIC_SHADES_DISK = true;  // (in metric_trace's crossings)
 
 // BL radius (rs) of a disk hit at world point p: rho^2 = r^2 + a^2.
 float metric_disk_radius(vec3 p) {
@@ -1080,12 +1082,8 @@ Hit metric_trace(vec3 x, vec3 d) {
         hit.deferred = true;
         return hit;
     }
-#ifndef EXP_NOIPHI
     kerr_i_phi_start(rad);
-#endif
-#ifndef EXP_NOANG
     kerr_angular_phi_start(ang);
-#endif
     float af = float(a), lamf = float(lam);
     // The shifts are measured by the camera's ZAMO (disk.glsl, volume.glsl).
     kerr_zamo_g = float((1.0 - omega * lam) / alpha);
@@ -1104,24 +1102,15 @@ Hit metric_trace(vec3 x, vec3 d) {
     // then its light is added here, weighted by its opacity, and the path
     // goes on to the next crossing (drawn opaque by the ray march) or the
     // sky, as the non-rotating path does.
-#ifdef EXP_THIN1
-    const int NSTOP = 1;
-#else
-    const int NSTOP = THIN_CROSSINGS;
-#endif
     int from = 0;
     float cpf = float(cp), spf = float(sp);
-    [[dont_unroll]] for (int stop = 0; stop < NSTOP; ++stop) {
+    [[dont_unroll]] for (int stop = 0; stop < THIN_CROSSINGS; ++stop) {
         bool on_disk = false;
         float t = rad.tau_end, rc = 0.0;
         KerrPoint end = KerrPoint(0.0, 1.0, 0.0, 1.0, 0.0, false);
         if (DISK_KIND == DISK_THIN && eta > 0.0 && rad.kcase != 4) {
             float r_in = float(to_m) * P.disk.inner, r_out = float(to_m) * P.disk.outer;
-#ifdef EXP_NOCROSS
-            [[dont_unroll]] for (int n = from; n < 0; ++n) {
-#else
             [[dont_unroll]] for (int n = from; n < 8; ++n) {
-#endif
                 float tc = kerr_crossing_tau(ang, n);
                 if (tc >= rad.tau_end) break;
                 KerrPoint e = kerr_radial_point(rad, tc);
@@ -1145,16 +1134,8 @@ Hit metric_trace(vec3 x, vec3 d) {
         }
         // The azimuth there: phi = phi_o + dphi (an equatorial ray, eta = 0
         // in the plane, keeps theta = pi/2 and lambda G_phi = lambda tau).
-#ifdef EXP_NOANG
-        vec2 ct = vec2(0.3, lamf * t);
-#else
         vec2 ct = eta != 0.0 ? kerr_angular_at(ang, lamf, t) : vec2(0.0, lamf * t);
-#endif
-#ifdef EXP_NOIPHI
-        float dphi = - ct.y;
-#else
         float dphi = -kerr_i_phi(rad, af, lamf, t, end) - ct.y;
-#endif
         vec2 cs = cos_sin_precise(dphi);
         float cph = cpf * cs.x - spf * cs.y, sph = spf * cs.x + cpf * cs.y;
         if (on_disk) {
@@ -1170,18 +1151,18 @@ Hit metric_trace(vec3 x, vec3 d) {
             float delay = 0.0;
 #ifndef GEODESIC_AOV
             if (LIGHT_DELAY) delay = kerr_travel_time(rad, ang, af, lamf, t) / float(to_m);
-            if (stop + 1 < THIN_CROSSINGS) {
-                // (BL r in the scene's units, as metric_disk_radius gives it.)
-                float r_disk = rc / float(to_m);
-                float time = P.disk.rotation_time - (LIGHT_DELAY ? P.disk.speed * delay : 0.0);
-                float dens = THIN_STRUCTURE ? thin_disk_density(r_disk, disk_azimuth(pos), time) : 1.0;
-                float alpha = clamp(P.disk.opacity * dens, 0.0, 1.0);
-                if (alpha < 1.0) {
-                    hit.glow += hit.trans * alpha * dens * disk_color(r_disk, g * observer_g);
-                    hit.trans *= 1.0 - alpha;
-                    continue;
-                }
-            }
+            // The disk's light, added here (METRIC_SHADES_DISK): the last
+            // crossing a path may see is opaque; before it, where the
+            // structure thins the disk, its light weighted by its opacity,
+            // and the path goes on. (BL r in the scene's units, as
+            // metric_disk_radius gives it.)
+            float r_disk = rc / float(to_m);
+            float time = P.disk.rotation_time - (LIGHT_DELAY ? P.disk.speed * delay : 0.0);
+            float dens = THIN_STRUCTURE ? thin_disk_density(r_disk, disk_azimuth(pos), time) : 1.0;
+            float alpha = stop + 1 < THIN_CROSSINGS ? clamp(P.disk.opacity * dens, 0.0, 1.0) : 1.0;
+            hit.glow += hit.trans * alpha * dens * disk_color(r_disk, g * observer_g);
+            hit.trans *= 1.0 - alpha;
+            if (alpha < 1.0) continue;
 #endif
             hit.outcome = OUT_DISK;
             hit.pos = pos;
