@@ -73,7 +73,11 @@ fn raymarch_struct_matches(name: &str, rust: &[usize]) {
             .iter()
             .filter_map(|&b| raymarch(GpuPath::Kerr, b, false)),
     );
-    assert_eq!(modules.len(), 16, "every metric's builds, the split once");
+    assert_eq!(
+        modules.len(),
+        18,
+        "every metric's builds, the split for both closed forms"
+    );
     for spirv in modules {
         let glsl = member_offsets(spirv, name);
         let rust: Vec<u32> = rust.iter().map(|&o| o as u32).collect();

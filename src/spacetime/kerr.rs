@@ -58,6 +58,25 @@ impl SpinningHole {
         }
     }
 
+    /// Whether the split ray march's trace pass leaves this ray to its second
+    /// pass (`shaders/include/metric/kerr.glsl`, `KERR_COMMON_ONLY`): a polar
+    /// motion that never crosses the equator, the radial case 4, or a path
+    /// that reaches the disk or the sky on any case but 2. (The GPU also
+    /// defers a case-2 path that meets the disk on its way into the horizon;
+    /// this estimate, for [`crate::passes::raymarch::split_pays`], counts it
+    /// as common.)
+    pub fn defers(&self, disk: Option<&Disk>, x0: DVec3, d: DVec3) -> bool {
+        let local = self.local(x0 - self.hole.position);
+        let dir = self.local(d).normalize();
+        let disk = disk.map(|d| KerrDisk {
+            inner: d.inner / self.hole.rs,
+            outer: d.outer / self.hole.rs,
+        });
+        let ray = kerr::trace_zamo(local, dir, self.spin, disk);
+        let reaches = !matches!(ray.outcome, KerrOutcome::Captured);
+        ray.case == 4 || ray.eta < 0.0 || (reaches && ray.case != 2)
+    }
+
     /// The observer's velocity relative to the ZAMO at `position` (world
     /// axes), or why it cannot stand there.
     pub fn observer_velocity(
