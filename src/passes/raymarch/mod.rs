@@ -18,6 +18,16 @@
 //! (a quarter of the default view). Those pixels pay for their path twice,
 //! so where the disk fills much of the view the one dispatch is cheaper:
 //! [`split_pays`] estimates the disk's share of the frame on the CPU.
+//!
+//! A spinning hole splits by its paths instead (any disk): `raymarch`
+//! carries the common ones (shaders/include/metric/kerr.glsl,
+//! `KERR_COMMON_ONLY`: the radial case 2 whose turning point lies outside
+//! the horizon, the polar motion that crosses the equator) with the code of
+//! the others compiled out, and lists the 2x2 quads where a path needs the
+//! rest; `raymarch rare` redoes those quads with the whole shader, ray
+//! differentials and all. In the default view at a* = 0.9 it defers about
+//! 4 % of the pixels (the disk in front of the shadow) and the frame falls
+//! from about 4.6 to about 2.6 times the non-rotating one's on lavapipe.
 
 use ash::vk;
 
