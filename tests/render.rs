@@ -572,6 +572,46 @@ fn a_lost_device_or_exhausted_memory_is_one_error_line_not_a_crash() {
     }
 }
 
+/// A scene rendered to EXR split and in one dispatch
+/// (`BLACKHOLE_NO_SPLIT=1`), checking that the split's second pass (`pass`)
+/// runs in the first only.
+fn split_and_single(
+    dir: &tempfile::TempDir,
+    name: &str,
+    toml: &str,
+    (w, h): (u32, u32),
+    pass: &str,
+) -> [image::Rgba32FImage; 2] {
+    let scene = path_in(dir, &format!("{name}.toml"));
+    std::fs::write(&scene, toml).unwrap();
+    [true, false].map(|split| {
+        let out = path_in(dir, &format!("{name}-{split}.exr"));
+        let mut c = blackhole();
+        c.args([
+            "render",
+            "--width",
+            &w.to_string(),
+            "--height",
+            &h.to_string(),
+        ])
+        .arg("--scene")
+        .arg(&scene)
+        .arg("--out")
+        .arg(&out);
+        if !split {
+            c.env("BLACKHOLE_NO_SPLIT", "1");
+        }
+        let (code, stdout, stderr) = run(c);
+        assert_clean(code, &stdout, &stderr);
+        assert_eq!(
+            stderr.contains(pass),
+            split,
+            "{name}: `{pass}` runs only when split:\n{stderr}"
+        );
+        image::open(&out).expect("EXR written").to_rgba32f()
+    })
+}
+
 /// The spinning hole's split ray march (a trace pass that carries the common
 /// paths and lists the 2x2 quads where a path needs the rest, then an
 /// indirect pass that redoes those quads with the whole shader) draws what
@@ -606,36 +646,7 @@ fn the_spinning_holes_split_draws_what_the_single_dispatch_draws() {
     ];
     // Odd sizes: quads past the image's edge are listed and store nothing.
     for ((name, toml), (w, h)) in scenes.into_iter().zip([(321u32, 181u32), (160, 90)]) {
-        let scene = path_in(&dir, &format!("{name}.toml"));
-        std::fs::write(&scene, toml).unwrap();
-        let mut images = Vec::new();
-        for split in [true, false] {
-            let out = path_in(&dir, &format!("{name}-{split}.exr"));
-            let mut c = blackhole();
-            c.args([
-                "render",
-                "--width",
-                &w.to_string(),
-                "--height",
-                &h.to_string(),
-            ])
-            .arg("--scene")
-            .arg(&scene)
-            .arg("--out")
-            .arg(&out);
-            if !split {
-                c.env("BLACKHOLE_NO_SPLIT", "1");
-            }
-            let (code, stdout, stderr) = run(c);
-            assert_clean(code, &stdout, &stderr);
-            assert_eq!(
-                stderr.contains("raymarch rare"),
-                split,
-                "{name}: the second pass runs only when split:\n{stderr}"
-            );
-            images.push(image::open(&out).expect("EXR written").to_rgba32f());
-        }
-        let (split, single) = (&images[0], &images[1]);
+        let [split, single] = &split_and_single(&dir, name, toml, (w, h), "raymarch rare");
         let lit = single.pixels().filter(|p| p[0] > 0.0).count();
         assert!(
             lit > (w * h / 10) as usize,
@@ -688,36 +699,7 @@ fn the_split_disk_pass_draws_what_the_single_dispatch_draws() {
     // The larger size lists more pixels than one row of the disk pass's
     // indirect dispatch holds (DISK_ROW workgroups of 64).
     for ((name, toml), (w, h)) in scenes.into_iter().zip([(640u32, 360u32), (160, 90)]) {
-        let scene = path_in(&dir, &format!("{name}.toml"));
-        std::fs::write(&scene, toml).unwrap();
-        let mut images = Vec::new();
-        for split in [true, false] {
-            let out = path_in(&dir, &format!("{name}-{split}.exr"));
-            let mut c = blackhole();
-            c.args([
-                "render",
-                "--width",
-                &w.to_string(),
-                "--height",
-                &h.to_string(),
-            ])
-            .arg("--scene")
-            .arg(&scene)
-            .arg("--out")
-            .arg(&out);
-            if !split {
-                c.env("BLACKHOLE_NO_SPLIT", "1");
-            }
-            let (code, stdout, stderr) = run(c);
-            assert_clean(code, &stdout, &stderr);
-            assert_eq!(
-                stderr.contains("raymarch disk"),
-                split,
-                "{name}: the disk pass runs only when split:\n{stderr}"
-            );
-            images.push(image::open(&out).expect("EXR written").to_rgba32f());
-        }
-        let (split, single) = (&images[0], &images[1]);
+        let [split, single] = &split_and_single(&dir, name, toml, (w, h), "raymarch disk");
         let lit = single.pixels().filter(|p| p[0] > 0.0).count();
         assert!(
             lit > (w * h / 10) as usize,

@@ -31,16 +31,21 @@ impl SpinningHole {
         (v.x * e1 + v.y * self.axis.normalize() + v.z * e2) * self.hole.rs
     }
 
-    /// Where the backward ray from `x0` along `d` (the ZAMO's frame there,
-    /// world axes) ends.
-    pub fn trace(&self, disk: Option<&Disk>, x0: DVec3, d: DVec3) -> Outcome {
+    /// The closed form's ray from `x0` along `d` (world), in the hole's frame.
+    fn trace_local(&self, disk: Option<&Disk>, x0: DVec3, d: DVec3) -> kerr::KerrRay {
         let local = self.local(x0 - self.hole.position);
         let dir = self.local(d).normalize();
         let disk = disk.map(|d| KerrDisk {
             inner: d.inner / self.hole.rs,
             outer: d.outer / self.hole.rs,
         });
-        match kerr::trace_zamo(local, dir, self.spin, disk).outcome {
+        kerr::trace_zamo(local, dir, self.spin, disk)
+    }
+
+    /// Where the backward ray from `x0` along `d` (the ZAMO's frame there,
+    /// world axes) ends.
+    pub fn trace(&self, disk: Option<&Disk>, x0: DVec3, d: DVec3) -> Outcome {
+        match self.trace_local(disk, x0, d).outcome {
             KerrOutcome::Captured => Outcome::Captured { hole: 0 },
             KerrOutcome::Escaped(v) => Outcome::Escaped {
                 direction: self.world(v).normalize(),
@@ -66,13 +71,7 @@ impl SpinningHole {
     /// this estimate, for [`crate::passes::raymarch::split_pays`], counts it
     /// as common.)
     pub fn defers(&self, disk: Option<&Disk>, x0: DVec3, d: DVec3) -> bool {
-        let local = self.local(x0 - self.hole.position);
-        let dir = self.local(d).normalize();
-        let disk = disk.map(|d| KerrDisk {
-            inner: d.inner / self.hole.rs,
-            outer: d.outer / self.hole.rs,
-        });
-        let ray = kerr::trace_zamo(local, dir, self.spin, disk);
+        let ray = self.trace_local(disk, x0, d);
         let reaches = !matches!(ray.outcome, KerrOutcome::Captured);
         ray.case == 4 || ray.eta < 0.0 || (reaches && ray.case != 2)
     }
