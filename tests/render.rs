@@ -619,7 +619,8 @@ fn split_and_single(
 /// a* = 0.9 (the disk in front of the shadow: paths into the horizon that
 /// meet the disk first) and a view from above the pole (polar motions that
 /// never cross the equator). A black sky and a smooth disk, so that what
-/// is compared is the paths. Fails when the second pass misses quads (a
+/// is compared is the paths (to a unit of the half-float image: the trace
+/// pass runs the 32-bit roots). Fails when the second pass misses quads (a
 /// dropped entry, a short dispatch, a quad split across lanes) or the trace
 /// pass keeps a path it cannot carry.
 #[test]
@@ -640,8 +641,8 @@ fn the_spinning_holes_split_draws_what_the_single_dispatch_draws() {
         ),
         (
             "pole",
-            "[[black_hole]]\nspin = 0.9\n[sky]\nkind = \"black\"\n[camera]\n\
-             position = [0.0, 8.0, -0.5]\nlook_at = [0.0, 0.0, 0.0]\n",
+            "[[black_hole]]\nspin = 0.9\n[sky]\nkind = \"black\"\n[disk]\nstructure = 0.0\n\
+             [camera]\nposition = [0.0, 8.0, -0.5]\nlook_at = [0.0, 0.0, 0.0]\n",
         ),
     ];
     // Odd sizes: quads past the image's edge are listed and store nothing.
@@ -655,7 +656,11 @@ fn the_spinning_holes_split_draws_what_the_single_dispatch_draws() {
         let mut differ = 0;
         for (x, y, s) in single.enumerate_pixels() {
             let t = split.get_pixel(x, y);
-            if (0..3).any(|k| (t[k] - s[k]).abs() > 1e-4 * s[k].abs().max(1.0)) {
+            // Within a unit of the half-float image: the trace pass takes
+            // the 32-bit roots (exact away from the shadow's edge, where it
+            // defers), the one dispatch the device's 64-bit ones.
+            let unit = 1.0 / 1024.0;
+            if (0..3).any(|k| (t[k] - s[k]).abs() > unit * s[k].abs().max(1.0)) {
                 differ += 1;
             }
         }

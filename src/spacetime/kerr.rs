@@ -67,9 +67,10 @@ impl SpinningHole {
     /// pass (`shaders/include/metric/kerr.glsl`, `KERR_COMMON_ONLY`): a polar
     /// motion that never crosses the equator, the radial case 4, or a path
     /// that reaches the disk or the sky on any case but 2. (The GPU also
-    /// defers a case-2 path that meets the disk on its way into the horizon;
-    /// this estimate, for [`crate::passes::raymarch::split_pays`], counts it
-    /// as common.)
+    /// defers a case-2 path that meets the disk on its way into the horizon,
+    /// and one within a hair of the shadow's edge, r4 - r3 < r4 / 10; this
+    /// estimate, for [`crate::passes::raymarch::split_pays`], counts them as
+    /// common.)
     pub fn defers(&self, disk: Option<&Disk>, x0: DVec3, d: DVec3) -> bool {
         let ray = self.trace_local(disk, x0, d);
         let reaches = !matches!(ray.outcome, KerrOutcome::Captured);

@@ -49,6 +49,15 @@
 // their 2x2 quads with the whole of this file.
 const bool METRIC_SPLITS_RARE = true;
 const bool KERR_COMMON_ONLY = DISK_STAGE == DISK_STAGE_TRACE;
+// The trace pass runs the build with 32-bit roots (passes/raymarch), exact
+// away from the shadow's edge; a path whose roots r3 and r4 lie within a
+// tenth of r4 of each other (near the photon orbits' double root, where
+// their f32 difference loses its digits) goes to the second pass too.
+#ifdef KERR_F32_ROOTS
+#define KERR_NEAR_EDGE(rad) ((rad).kcase == 2 && (rad).r43 < 0.1 * (rad).r4)
+#else
+#define KERR_NEAR_EDGE(rad) false
+#endif
 
 #ifdef KERR_F32_ROOTS
 #define kreal float
@@ -1078,7 +1087,7 @@ Hit metric_trace(vec3 x, vec3 d) {
     else kerr_radial_ends(rad, 0.0, 0.0);
     kerr_angular_start(ang, f.z);
     // The split's trace pass: the rarer paths to the second pass.
-    if (KERR_COMMON_ONLY && (rad.kcase == 4 || eta < 0.0)) {
+    if (KERR_COMMON_ONLY && (rad.kcase == 4 || eta < 0.0 || KERR_NEAR_EDGE(rad))) {
         hit.deferred = true;
         return hit;
     }

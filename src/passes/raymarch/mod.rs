@@ -25,9 +25,11 @@
 //! the horizon, the polar motion that crosses the equator) with the code of
 //! the others compiled out, and lists the 2x2 quads where a path needs the
 //! rest; `raymarch rare` redoes those quads with the whole shader, ray
-//! differentials and all. In the default view at a* = 0.9 it defers about
-//! 4 % of the pixels (the disk in front of the shadow) and the frame falls
-//! from about 4.6 to about 2.6 times the non-rotating one's on lavapipe.
+//! differentials and all. The trace pass takes the build with 32-bit roots
+//! and defers the paths near the shadow's edge too; the second pass keeps
+//! the device's. In the default view at a* = 0.9 it defers about 4 % of the
+//! pixels (the disk in front of the shadow) and the frame falls from about
+//! 4.5 to 5.3 times the non-rotating one's on lavapipe to 2.0 to 2.3.
 
 use ash::vk;
 
@@ -373,13 +375,16 @@ impl RaymarchPipelines {
             } else {
                 RaymarchBuild::NoQuad
             };
-            let spirv = shaders::raymarch(variant.path, build, self.features.kerr_f64).ok_or_else(
-                || {
-                    crate::Error::Other(format!(
-                        "no {build:?} build of the ray march for {variant:?}"
-                    ))
-                },
-            )?;
+            // The spinning hole's split trace pass takes the 32-bit roots
+            // (it defers the paths near the shadow's edge, where they lose
+            // precision, to the second pass, which keeps the device's).
+            let trace = variant.disk_stage == glsl::DISK_STAGE_TRACE;
+            let kerr_f64 = self.features.kerr_f64 && !(variant.path == GpuPath::Kerr && trace);
+            let spirv = shaders::raymarch(variant.path, build, kerr_f64).ok_or_else(|| {
+                crate::Error::Other(format!(
+                    "no {build:?} build of the ray march for {variant:?}"
+                ))
+            })?;
             ComputePipeline::with_constants(
                 &self.gpu,
                 &variant.name(),
