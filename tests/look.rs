@@ -23,6 +23,15 @@ fn luma8(px: &[u8]) -> Vec<f64> {
         .collect()
 }
 
+/// A preset with a fixed exposure and no dither, so two renders differ only
+/// where the scene does.
+fn steady(preset: &str) -> Scene {
+    let mut scene = Scene::load(preset).unwrap();
+    scene.post.auto_exposure = false;
+    scene.post.dither = false;
+    scene
+}
+
 fn srgb_decode(v: u8) -> f64 {
     let c = f64::from(v) / 255.0;
     if c <= 0.04045 {
@@ -197,9 +206,7 @@ fn the_doppler_preset_shows_blue_white_approaching_and_orange_receding() {
 #[test]
 fn each_physics_switch_changes_the_disk() {
     let mut r = renderer();
-    let mut scene = Scene::load("doppler").unwrap();
-    scene.post.auto_exposure = false;
-    scene.post.dither = false;
+    let mut scene = steady("doppler");
     scene.bloom.strength = 0.0;
     let (w, h) = (160, 90);
     let mut with = |doppler, beaming, redshift| {
@@ -235,9 +242,7 @@ fn light_travel_time_shows_the_disk_as_it_was() {
     // when its light left changes the picture; with the disk at rest it
     // changes nothing.
     let mut r = renderer();
-    let mut scene = Scene::builtin_default().unwrap();
-    scene.post.auto_exposure = false;
-    scene.post.dither = false;
+    let mut scene = steady("default");
     scene.time = 40.0;
     let (w, h) = (160, 90);
     let mut frame = |delay: bool, speed: f64| {
@@ -269,9 +274,7 @@ fn a_spinning_holes_disk_is_delayed_as_the_non_rotating_one() {
     // changes in the picture must be the same change (correlation 0.98,
     // mean change 6.28 against 6.24 of 255).
     let mut r = renderer();
-    let mut scene = Scene::builtin_default().unwrap();
-    scene.post.auto_exposure = false;
-    scene.post.dither = false;
+    let mut scene = steady("default");
     scene.time = 40.0;
     let (w, h) = (160, 90);
     let mut luma = |spin: f64, delay: bool| -> Vec<f64> {
@@ -322,9 +325,7 @@ fn at_a_tiny_spin_the_thin_disk_looks_as_around_a_still_hole() {
     // 255 on average at 320x180, and 4,184 pixels by more than 16; now
     // 0.1 and 123, on the shadow's and the photon ring's edges).
     let mut r = renderer();
-    let mut scene = Scene::builtin_default().unwrap();
-    scene.post.auto_exposure = false;
-    scene.post.dither = false;
+    let mut scene = steady("default");
     let (w, h) = (320, 180);
     let mut luma = |spin: f64| -> Vec<f64> {
         scene.black_holes[0].spin = spin;

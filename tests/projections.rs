@@ -335,19 +335,7 @@ fn the_catalogue_stars_keep_their_flux_in_every_projection() {
         let scene = path_in(&dir, &format!("{name}.toml"));
         std::fs::write(&scene, format!("{base}{extra}")).expect("scene");
         let out = path_in(&dir, &format!("{name}.exr"));
-        let mut c = common::blackhole();
-        c.args([
-            "render",
-            "--width",
-            &w.to_string(),
-            "--height",
-            &h.to_string(),
-        ])
-        .arg("--scene")
-        .arg(&scene)
-        .arg("--out")
-        .arg(&out);
-        let (code, stdout, stderr) = common::run(c);
+        let (code, stdout, stderr) = common::run(common::render_command(&scene, &out, w, h));
         common::assert_clean(code, &stdout, &stderr);
         image::open(&out).expect("EXR").to_rgba32f()
     };

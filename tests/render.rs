@@ -4,7 +4,9 @@
 mod common;
 
 use blackhole::passes::raymarch::glsl::DISK_ROW;
-use common::{SceneSrc, assert_clean, blackhole, path_in, render_png, run, scratch};
+use common::{
+    SceneSrc, assert_clean, blackhole, path_in, render_command, render_png, run, scratch,
+};
 
 fn luma(p: &image::Rgb<u8>) -> f32 {
     0.2126 * f32::from(p[0]) + 0.7152 * f32::from(p[1]) + 0.0722 * f32::from(p[2])
@@ -586,18 +588,7 @@ fn split_and_single(
     std::fs::write(&scene, toml).unwrap();
     [true, false].map(|split| {
         let out = path_in(dir, &format!("{name}-{split}.exr"));
-        let mut c = blackhole();
-        c.args([
-            "render",
-            "--width",
-            &w.to_string(),
-            "--height",
-            &h.to_string(),
-        ])
-        .arg("--scene")
-        .arg(&scene)
-        .arg("--out")
-        .arg(&out);
+        let mut c = render_command(&scene, &out, w, h);
         if !split {
             c.env("BLACKHOLE_NO_SPLIT", "1");
         }

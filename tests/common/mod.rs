@@ -83,6 +83,19 @@ pub fn render_png(
         }
     };
     let out = path_in(dir, &format!("{name}.png"));
+    let (code, stdout, stderr) = run(render_command(&scene_arg, &out, width, height));
+    assert_clean(code, &stdout, &stderr);
+    image::open(&out).expect("PNG written").to_rgb8()
+}
+
+/// `blackhole render --width W --height H --scene SCENE --out OUT`, not yet
+/// run (a test may add flags or settings).
+pub fn render_command(
+    scene: impl AsRef<std::ffi::OsStr>,
+    out: &Path,
+    width: u32,
+    height: u32,
+) -> Command {
     let mut c = blackhole();
     c.args([
         "render",
@@ -91,11 +104,11 @@ pub fn render_png(
         "--height",
         &height.to_string(),
     ])
-    .args(["--scene", &scene_arg, "--out"])
-    .arg(&out);
-    let (code, stdout, stderr) = run(c);
-    assert_clean(code, &stdout, &stderr);
-    image::open(&out).expect("PNG written").to_rgb8()
+    .arg("--scene")
+    .arg(scene)
+    .arg("--out")
+    .arg(out);
+    c
 }
 
 /// A renderer on the default device with the validation layer required.
