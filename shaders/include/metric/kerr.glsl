@@ -69,49 +69,30 @@ const bool KERR_COMMON_ONLY = DISK_STAGE == DISK_STAGE_TRACE;
 
 // --------------------------------------------------------------- kernels
 
-// atan(t), t >= 0, to full f32 precision (a driver's atan may be 4096 ulp
-// off): by asin_precise of an argument at most 1/sqrt(2).
-float atan_precise(float t) {
-    float u = t > 1.0 ? 1.0 / t : t;
-    float v = asin_precise(u * inversesqrt(1.0 + u * u));
-    return t > 1.0 ? HALF_PI - v : v;
-}
+// Carlson's R_C(x, y), x >= 0, y > 0, by four duplication steps (each
+// brings x and y some four times closer: from |s| <= 1 to below 0.004,
+// s = (y - x) / (x + 2 y)) and its series to s^5 (error below 1e-13
+// there): no inverse trigonometric or hyperbolic function and no branch
+// (atan, atanh and their series would all run on a CPU driver). Written once
+// for one and for four at once (KERR_RJ).
+#define KERR_RC(T)                                                                 \
+    T kerr_rc_dup(T x, T y) {                                                      \
+        [[unroll]] for (int i = 0; i < 4; ++i) {                                   \
+            T l = 2.0 * sqrt(x * y) + y;                                           \
+            x = 0.25 * (x + l);                                                    \
+            y = 0.25 * (y + l);                                                    \
+        }                                                                          \
+        T imu = 3.0 / (x + 2.0 * y);                                               \
+        T s = (1.0 / 3.0) * (y - x) * imu;                                         \
+        return (1.0 + s * s * (0.3 + s * (1.0 / 7.0 + s * (0.375 + s * (9.0 / 22.0))))) * sqrt(imu); \
+    }
+KERR_RC(float)
+KERR_RC(vec4)
 
-// Carlson's R_C(x, y), x >= 0, y != 0 (the Cauchy principal value for
-// y < 0), in closed form: atan or asinh of sqrt(|y - x| / .), its series
-// where y is within 2% of x.
+// R_C(x, y), x >= 0, y != 0, the Cauchy principal value for y < 0 (DLMF
+// 19.2.20: sqrt(x / (x - y)) R_C(x - y, -y)).
 float kerr_rc(float x, float y) {
-    float w = 1.0;
-    if (y < 0.0) {
-        w = sqrt(x / (x - y));
-        x -= y;
-        y = -y;
-    }
-    float d = y - x;
-    float r;
-    if (abs(d) < 0.02 * x) {
-        float e = d / x;
-        r = inversesqrt(x) * (1.0 + e * (-1.0 / 3.0 + e * (0.2 + e * (-1.0 / 7.0 + e * (1.0 / 9.0)))));
-    } else if (d > 0.0) {
-        // (One atan for both sides: on a CPU driver both would run.)
-        float v = atan_precise(d < x ? sqrt(d / x) : sqrt(x / d));
-        r = (d < x ? v : HALF_PI - v) * inversesqrt(d);
-    } else {
-        r = asinh_precise(sqrt(-d / y)) * inversesqrt(-d);
-    }
-    return w * r;
-}
-
-// R_C(x, y) for y >= x (kerr_pi_neg's partner form): kerr_rc without its
-// principal value and atanh.
-float kerr_rc_above(float x, float y) {
-    float d = y - x;
-    if (d < 0.02 * x) {
-        float e = d / x;
-        return inversesqrt(x) * (1.0 + e * (-1.0 / 3.0 + e * (0.2 + e * (-1.0 / 7.0 + e * (1.0 / 9.0)))));
-    }
-    float v = atan_precise(d < x ? sqrt(d / x) : sqrt(x / d));
-    return (d < x ? v : HALF_PI - v) * inversesqrt(d);
+    return (y < 0.0 ? sqrt(x / (x - y)) : 1.0) * kerr_rc_dup(y < 0.0 ? x - y : x, abs(y));
 }
 
 // R_C(1, 1 + e) for |e| < 0.03 (every duplication turn of R_J after the
@@ -120,126 +101,73 @@ float kerr_rc_series(float e) {
     return 1.0 + e * (-1.0 / 3.0 + e * (0.2 + e * (-1.0 / 7.0 + e * (1.0 / 9.0 + e * (-1.0 / 11.0 + e * (1.0 / 13.0))))));
 }
 
-vec2 kerr_rc_series(vec2 e) {
+vec4 kerr_rc_series(vec4 e) {
     return 1.0 + e * (-1.0 / 3.0 + e * (0.2 + e * (-1.0 / 7.0 + e * (1.0 / 9.0 + e * (-1.0 / 11.0 + e * (1.0 / 13.0))))));
 }
 
-// R_C(1, 1 + e) for |e| < 1 (R_J's first turn): atan or atanh of sqrt|e|.
-float kerr_rc_first(float e) {
-    if (abs(e) < 0.03) return kerr_rc_series(e);
-    float t = sqrt(abs(e)), u = t * inversesqrt(1.0 + e);
-    return (e > 0.0 ? asin_precise(u) : asinh_precise(u)) / t;
+bool kerr_rj_done(float spread, float a) {
+    return spread < 0.1 * a;
 }
 
-// The same for e >= 0 (p at least x, y and z): atan only.
-float kerr_rc_first_pos(float e) {
-    if (e < 0.03) return kerr_rc_series(e);
-    float t = sqrt(e), u = t * inversesqrt(1.0 + e);
-    return asin_precise(u) / t;
+bool kerr_rj_done(vec4 spread, vec4 a) {
+    return all(lessThan(spread, 0.1 * a));
 }
 
-// Carlson's series of R_J at the end of the duplication (DLMF 19.36.2),
-// from the mean a and the last arguments; 4^-m a^(-3/2) times it.
-float kerr_rj_tail(float x, float y, float z, float p, float a, float fac) {
-    float ia = 1.0 / a;
-    float bx = (a - x) * ia, by = (a - y) * ia, bz = (a - z) * ia;
-    float bp = -0.5 * (bx + by + bz);
-    float xyz = bx * by * bz, p2 = bp * bp;
-    float e2 = bx * by + bx * bz + by * bz - 3.0 * p2;
-    float e3 = xyz + 2.0 * e2 * bp + 4.0 * p2 * bp;
-    float e4 = (2.0 * xyz + e2 * bp + 3.0 * p2 * bp) * bp;
-    float e5 = xyz * p2;
-    float series = 1.0 - (3.0 / 14.0) * e2 + e3 * (1.0 / 6.0) + (9.0 / 88.0) * e2 * e2 - (3.0 / 22.0) * e4
-                 - (9.0 / 52.0) * e2 * e3 + (3.0 / 26.0) * e5;
-    return fac * ia * sqrt(ia) * series;
-}
-
-// Carlson's R_J(x, y, z, p), p > 0 (Carlson 1995, DLMF 19.36.2): each
-// duplication turn adds 4^-m R_C(1, 1 + e_m) / d_m with d = prod(sqrt p +
-// sqrt x_i) and e = prod(sqrt p - sqrt x_i) / d, so |e| < 1, and it falls
-// some 64-fold a turn: the first turn takes atan or atanh, the rest the
-// series. Until the arguments are within 0.1 of their mean; then the
-// fifth-order series, whose error there is below 3e-8. The first turn
-// comes before the loop (on a CPU driver a loop's body runs all of itself
-// every turn, so atan and atanh inside it would run every turn). e_pos: p
-// is known to be at least x, y and z (then e >= 0: no atanh).
-float kerr_rj(float x, float y, float z, float p, bool e_pos) {
-    float sum, fac = 1.0, a;
-    {
-        float sx = sqrt(x), sy = sqrt(y), sz = sqrt(z), sp = sqrt(p);
-        float l = sx * (sy + sz) + sy * sz;
-        float id = 1.0 / ((sp + sx) * (sp + sy) * (sp + sz));
-        float e = (sp - sx) * (sp - sy) * (sp - sz) * id;
-        sum = id * (e_pos ? kerr_rc_first_pos(e) : kerr_rc_first(e));
-        fac = 0.25;
-        x = 0.25 * (x + l);
-        y = 0.25 * (y + l);
-        z = 0.25 * (z + l);
-        p = 0.25 * (p + l);
-        a = 0.2 * (x + y + z + p + p);
+// Carlson's R_J(x, y, 1, p), p > 0 (every one this file needs has z = 1;
+// Carlson 1995, DLMF 19.36.2): each duplication turn adds 4^-m R_C(1, 1 +
+// e_m) / d_m with d = prod(sqrt p + sqrt x_i) and e = prod(sqrt p - sqrt
+// x_i) / d, so |e| < 1, and it falls some 64-fold a turn: the first turn
+// takes R_C by its own duplication (kerr_rc_dup), the rest its series.
+// Until the arguments are within 0.1 of their mean; then the fifth-order
+// series, whose error there is below 3e-8. The first turn comes before the
+// loop (on a CPU driver a loop's body runs all of itself every turn).
+//
+// Written once (the macro) for one integral and for four at once: a path's
+// integrals at one point come as a vec4 (one loop instead of four).
+#define KERR_RJ(T)                                                                                   \
+    T kerr_rj(T x, T y, T p) {                                                                       \
+        T z = T(1.0), sum, a;                                                                        \
+        float fac = 0.25;                                                                            \
+        {                                                                                            \
+            T sx = sqrt(x), sy = sqrt(y), sp = sqrt(p);                                              \
+            T l = sx * (sy + 1.0) + sy;                                                              \
+            T id = 1.0 / ((sp + sx) * (sp + sy) * (sp + 1.0));                                       \
+            sum = id * kerr_rc_dup(T(1.0), 1.0 + (sp - sx) * (sp - sy) * (sp - 1.0) * id);                \
+            x = 0.25 * (x + l);                                                                      \
+            y = 0.25 * (y + l);                                                                      \
+            z = 0.25 * (z + l);                                                                      \
+            p = 0.25 * (p + l);                                                                      \
+            a = 0.2 * (x + y + z + p + p);                                                           \
+        }                                                                                            \
+        bool done = kerr_rj_done(max(max(abs(a - x), abs(a - y)), max(abs(a - z), abs(a - p))), a); \
+        [[dont_unroll]] for (int i = 1; i < 16 && !done; ++i) {                                      \
+            T sx = sqrt(x), sy = sqrt(y), sz = sqrt(z), sp = sqrt(p);                                \
+            T l = sx * (sy + sz) + sy * sz;                                                          \
+            T id = 1.0 / ((sp + sx) * (sp + sy) * (sp + sz));                                        \
+            sum += fac * id * kerr_rc_series((sp - sx) * (sp - sy) * (sp - sz) * id);                \
+            fac *= 0.25;                                                                             \
+            x = 0.25 * (x + l);                                                                      \
+            y = 0.25 * (y + l);                                                                      \
+            z = 0.25 * (z + l);                                                                      \
+            p = 0.25 * (p + l);                                                                      \
+            a = 0.2 * (x + y + z + p + p);                                                           \
+            done = kerr_rj_done(max(max(abs(a - x), abs(a - y)), max(abs(a - z), abs(a - p))), a); \
+        }                                                                                            \
+        /* The series at the mean (DLMF 19.36.2), 4^-m a^(-3/2) times it. */                         \
+        T ia = 1.0 / a;                                                                              \
+        T bx = (a - x) * ia, by = (a - y) * ia, bz = (a - z) * ia;                                   \
+        T bp = -0.5 * (bx + by + bz);                                                                \
+        T xyz = bx * by * bz, p2 = bp * bp;                                                          \
+        T e2 = bx * by + bx * bz + by * bz - 3.0 * p2;                                               \
+        T e3 = xyz + 2.0 * e2 * bp + 4.0 * p2 * bp;                                                  \
+        T e4 = (2.0 * xyz + e2 * bp + 3.0 * p2 * bp) * bp;                                           \
+        T e5 = xyz * p2;                                                                             \
+        T series = 1.0 - (3.0 / 14.0) * e2 + e3 * (1.0 / 6.0) + (9.0 / 88.0) * e2 * e2              \
+                 - (3.0 / 22.0) * e4 - (9.0 / 52.0) * e2 * e3 + (3.0 / 26.0) * e5;                  \
+        return fac * ia * sqrt(ia) * series + 6.0 * sum;                                             \
     }
-    bool done = max(max(abs(a - x), abs(a - y)), max(abs(a - z), abs(a - p))) < 0.1 * a;
-    [[dont_unroll]] for (int i = 1; i < 16 && !done; ++i) {
-        float sx = sqrt(x), sy = sqrt(y), sz = sqrt(z), sp = sqrt(p);
-        float l = sx * (sy + sz) + sy * sz;
-        float id = 1.0 / ((sp + sx) * (sp + sy) * (sp + sz));
-        float e = (sp - sx) * (sp - sy) * (sp - sz) * id;
-        sum += fac * id * kerr_rc_series(e);
-        fac *= 0.25;
-        x = 0.25 * (x + l);
-        y = 0.25 * (y + l);
-        z = 0.25 * (z + l);
-        p = 0.25 * (p + l);
-        a = 0.2 * (x + y + z + p + p);
-        done = max(max(abs(a - x), abs(a - y)), max(abs(a - z), abs(a - p))) < 0.1 * a;
-    }
-    return kerr_rj_tail(x, y, z, p, a, fac) + 6.0 * sum;
-}
-
-// How far each of R_J's arguments lies from their mean, for two p.
-vec2 kerr_spread2(float x, float y, float z, vec2 p, vec2 a) {
-    return max(vec2(max(max(abs(a.x - x), abs(a.x - y)), abs(a.x - z)), max(max(abs(a.y - x), abs(a.y - y)), abs(a.y - z))),
-               abs(a - p));
-}
-
-// R_J for two values of p at once: x, y, z duplicate the same whatever p
-// (the two horizons of one point of a path share them).
-vec2 kerr_rj2(float x, float y, float z, vec2 p) {
-    vec2 sum, a;
-    float fac = 1.0;
-    // The first turn before the loop, as in kerr_rj.
-    {
-        float sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
-        vec2 sp = sqrt(p);
-        float l = sx * (sy + sz) + sy * sz;
-        vec2 id = 1.0 / ((sp + sx) * (sp + sy) * (sp + sz));
-        vec2 e = (sp - sx) * (sp - sy) * (sp - sz) * id;
-        sum = id * vec2(kerr_rc_first(e.x), kerr_rc_first(e.y));
-        fac = 0.25;
-        x = 0.25 * (x + l);
-        y = 0.25 * (y + l);
-        z = 0.25 * (z + l);
-        p = 0.25 * (p + l);
-        a = 0.2 * (x + y + z + p + p);
-    }
-    bool done = all(lessThan(kerr_spread2(x, y, z, p, a), 0.1 * a));
-    [[dont_unroll]] for (int i = 1; i < 16 && !done; ++i) {
-        float sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
-        vec2 sp = sqrt(p);
-        float l = sx * (sy + sz) + sy * sz;
-        vec2 id = 1.0 / ((sp + sx) * (sp + sy) * (sp + sz));
-        vec2 e = (sp - sx) * (sp - sy) * (sp - sz) * id;
-        sum += fac * id * kerr_rc_series(e);
-        fac *= 0.25;
-        x = 0.25 * (x + l);
-        y = 0.25 * (y + l);
-        z = 0.25 * (z + l);
-        p = 0.25 * (p + l);
-        a = 0.2 * (x + y + z + p + p);
-        done = all(lessThan(kerr_spread2(x, y, z, p, a), 0.1 * a));
-    }
-    return vec2(kerr_rj_tail(x, y, z, p.x, a.x, fac), kerr_rj_tail(x, y, z, p.y, a.y, fac)) + 6.0 * sum;
-}
+KERR_RJ(float)
+KERR_RJ(vec4)
 
 // A point of an elliptic integral: amplitude phi in [0, pi/2] as s =
 // sin(phi) >= 0 and c2 = cos^2(phi), f = F(phi | m); the value wanted there
@@ -256,7 +184,7 @@ float kerr_pi(float n, KerrPoint e, float m, float mc) {
     float s2 = e.s * e.s, d2 = mc + m * e.c2;
     bool pv = n > 1.0;
     float nn = pv ? m / n : n;
-    float t = nn * (1.0 / 3.0) * s2 * e.s * kerr_rj(e.c2, d2, 1.0, 1.0 - nn * s2, false);
+    float t = nn * (1.0 / 3.0) * s2 * e.s * kerr_rj(e.c2, d2, 1.0 - nn * s2);
     if (pv) {
         float pole = 1.0 - n * s2;
         pole = abs(pole) < 1e-6 ? (pole < 0.0 ? -1e-6 : 1e-6) : pole;
@@ -267,26 +195,41 @@ float kerr_pi(float n, KerrPoint e, float m, float mc) {
 
 // Pi(-N; phi | m), N >= 0, stable for large N (near the spin axis N grows
 // as 1 / lambda^2): past sqrt(m) through the partner -m / N.
-float kerr_pi_neg(float bn, KerrPoint e, float m, float mc) {
+// Its R_J's arguments (x, y, p) at a point (kerr_pi_neg_of finishes it, so
+// that a caller may take several R_J in one call).
+vec3 kerr_pi_neg_args(float bn, KerrPoint e, float m, float mc) {
+    float np = bn > sqrt(m) ? m / bn : bn;
+    return vec3(e.c2, mc + m * e.c2, 1.0 + np * e.s * e.s);
+}
+
+float kerr_pi_neg_of(float bn, KerrPoint e, float m, float mc, float rj) {
     float s2 = e.s * e.s, d2 = mc + m * e.c2;
     bool partner = bn > sqrt(m);
     float np = partner ? m / bn : bn;
-    float t = np * (1.0 / 3.0) * s2 * e.s * kerr_rj(e.c2, d2, 1.0, 1.0 + np * s2, true);
-    if (partner) return e.s * kerr_rc_above(e.c2 * d2, (1.0 + bn * s2) * (1.0 + np * s2)) + t;
+    float t = np * (1.0 / 3.0) * s2 * e.s * rj;
+    // R_C(x, y) = R_C(x / y, 1) / sqrt(y): y grows without bound near the
+    // spin axis (N ~ 1 / lambda^2).
+    float y = (1.0 + bn * s2) * (1.0 + np * s2);
+    if (partner) return e.s * kerr_rc_dup(e.c2 * d2 / y, 1.0) * inversesqrt(y) + t;
     return e.f - t;
+}
+
+float kerr_pi_neg(float bn, KerrPoint e, float m, float mc) {
+    vec3 q = kerr_pi_neg_args(bn, e, m, mc);
+    return kerr_pi_neg_of(bn, e, m, mc, kerr_rj(q.x, q.y, q.z));
 }
 
 // The complete Pi(n | m) (n > 1: the principal value) and Pi(-N | m).
 float kerr_pi_complete(float n, float kk, float m, float mc) {
     bool pv = n > 1.0;
     float nn = pv ? m / n : n;
-    float t = nn * (1.0 / 3.0) * kerr_rj(0.0, mc, 1.0, 1.0 - nn, false);
+    float t = nn * (1.0 / 3.0) * kerr_rj(0.0, mc, 1.0 - nn);
     return pv ? -t : kk + t;
 }
 
-float kerr_pi_neg_complete(float bn, float kk, float m, float mc) {
-    KerrPoint e = KerrPoint(1.0, 0.0, kk, 1.0, 0.0, false);
-    return kerr_pi_neg(bn, e, m, mc);
+// The point at K (phi = pi/2), where the incomplete integrals are complete.
+KerrPoint kerr_point_k(float kk) {
+    return KerrPoint(1.0, 0.0, kk, 1.0, 0.0, false);
 }
 
 // The point of argument u in [0, 2K] (folded at K: sn(2K - u) = sn u).
@@ -311,14 +254,19 @@ KerrPoint kerr_point_any(float u, Agm g, float kk) {
     return e;
 }
 
-// 16-point Gauss-Legendre on [-1, 1]: the positive nodes and their weights.
-const float KERR_GL_X[8] = float[8](0.09501250983763744, 0.2816035507792589, 0.45801677765722737,
-    0.6178762444026438, 0.755404408355003, 0.8656312023878318, 0.9445750230732326, 0.9894009349916499);
-const float KERR_GL_W[8] = float[8](0.18945061045506864, 0.18260341504492364, 0.16915651939500265,
-    0.1495959888165767, 0.12462897125553407, 0.0951585116824926, 0.062253523938647456, 0.027152459411754176);
-
+// 16-point Gauss-Legendre on [-1, 1]: node i and its weight. The positive
+// nodes and weights as vec4s picked by a one-hot mask, not an indexed
+// array: a CPU driver builds a constant array indexed in a loop in every
+// invocation, lane by lane, wherever the loop may run (about a tenth of the
+// trace pass's code when it was one).
 vec2 kerr_gl_node(int i) {
-    return i < 8 ? vec2(-KERR_GL_X[7 - i], KERR_GL_W[7 - i]) : vec2(KERR_GL_X[i - 8], KERR_GL_W[i - 8]);
+    int j = i < 8 ? 7 - i : i - 8;
+    vec4 lo = vec4(equal(ivec4(j), ivec4(0, 1, 2, 3))), hi = vec4(equal(ivec4(j), ivec4(4, 5, 6, 7)));
+    float x = dot(lo, vec4(0.09501250983763744, 0.2816035507792589, 0.45801677765722737, 0.6178762444026438))
+            + dot(hi, vec4(0.755404408355003, 0.8656312023878318, 0.9445750230732326, 0.9894009349916499));
+    float w = dot(lo, vec4(0.18945061045506864, 0.18260341504492364, 0.16915651939500265, 0.1495959888165767))
+            + dot(hi, vec4(0.12462897125553407, 0.0951585116824926, 0.062253523938647456, 0.027152459411754176));
+    return vec2(i < 8 ? -x : x, w);
 }
 
 // 8-point Gauss-Legendre on [-1, 1]: the positive nodes and their weights.
@@ -571,12 +519,9 @@ float kerr_j(KerrRadial k, float rh, float tau, KerrPoint e0, KerrPoint e1) {
         // With Pi = X + (n/3) s^3 R_J and X1 - X0 = rate tau, rearranged so
         // that nothing cancels where r3 meets the horizon (lambda near
         // 2 r_h / a, where R(r_h) = (2 r_h - a lambda)^2 vanishes): 0 <= n < 1.
-        float q = 0.0;
-        [[dont_unroll]] for (int i = 0; i < 2; ++i) {
-            KerrPoint e = i == 0 ? e0 : e1;
-            float s2 = e.s * e.s;
-            q += (i == 0 ? -e.sgn : e.sgn) * s2 * e.s * kerr_rj(e.c2, k.mc + k.m * e.c2, 1.0, 1.0 - n * s2, false);
-        }
+        vec2 c2 = vec2(e0.c2, e1.c2), s = vec2(e0.s, e1.s);
+        vec4 rj = kerr_rj(vec4(c2, 1.0, 1.0), vec4(k.mc + k.m * c2, 1.0, 1.0), vec4(1.0 - n * s * s, 1.0, 1.0));
+        float q = dot(vec2(-e0.sgn, e1.sgn) * s * s * s, rj.xy);
         return tau / r4h - k.r43 * k.r41 / (3.0 * k.rate * k.r31 * r4h * r4h) * q;
     }
     if (abs(rh - k.r2) < 1e-4 * k.r21) return kerr_j_quadrature(k, rh, tau);
@@ -606,28 +551,26 @@ float kerr_j(KerrRadial k, float rh, float tau, KerrPoint e0, KerrPoint e1) {
     return c1 * tau + k.s_r / k.rate * c2 * (rr[1] - rr[0]);
 }
 
-// The camera's part of kerr_i_phi's case-2 form, once for the path (the
-// thin disk's light may stop it twice).
-void kerr_i_phi_start(inout KerrRadial k) {
-    vec2 r4h = k.r4 - k.rh;
-    vec2 n = k.r41 * (k.r3 - k.rh) / (k.r31 * r4h);
-    KerrPoint e = k.cam;
-    float s2 = e.s * e.s;
-    k.q_cam = -e.sgn * s2 * e.s * kerr_rj2(e.c2, k.mc + k.m * e.c2, 1.0, 1.0 - n * s2);
+// kerr_j's case-2 form holds for both horizons where they lie inside r4
+// (every ray that escapes); its Pi's characteristics n for the two.
+bool kerr_i_phi_case2(KerrRadial k) {
+    return k.kcase == 2 && k.rh.x <= k.r4;
+}
+
+vec2 kerr_i_phi_n(KerrRadial k) {
+    return k.r41 * (k.r3 - k.rh) / (k.r31 * (k.r4 - k.rh));
 }
 
 // I_phi(tau): the integral of a (2 r - a lambda) / Delta over Mino time,
-// e1 the path's point at tau (kerr_i_phi_start first).
-float kerr_i_phi(KerrRadial k, float a, float lam, float tau, KerrPoint e1) {
+// e1 the path's point at tau; rj: the R_J of its case-2 form at e1 for the
+// two horizons (kerr_end), k.q_cam their camera's part (kerr_phi_start).
+float kerr_i_phi(KerrRadial k, float a, float tau, KerrPoint e1, vec2 rj) {
     if (a == 0.0) return 0.0;
     if (k.kcase == 4) return k.i_phi_end;
-    if (k.kcase == 2 && k.rh.x <= k.r4) {
-        // Case 2, both horizons inside r4 (every ray that escapes): kerr_j's
-        // rearranged form for both at once, R_J sharing its duplication.
+    if (kerr_i_phi_case2(k)) {
+        // kerr_j's rearranged form for both horizons at once.
         vec2 r4h = k.r4 - k.rh;
-        vec2 n = k.r41 * (k.r3 - k.rh) / (k.r31 * r4h);
-        float s2 = e1.s * e1.s;
-        vec2 q = k.q_cam + e1.sgn * s2 * e1.s * kerr_rj2(e1.c2, k.mc + k.m * e1.c2, 1.0, 1.0 - n * s2);
+        vec2 q = k.q_cam + e1.sgn * e1.s * e1.s * e1.s * rj;
         return dot(k.ah, tau / r4h - k.r43 * k.r41 / (3.0 * k.rate * k.r31 * r4h * r4h) * q);
     }
     if (KERR_COMMON_ONLY) return 0.0;  // (metric_trace deferred the path)
@@ -655,7 +598,7 @@ struct KerrAngular {
     float psi0;                         // psi at the camera (ordinary)
     vec2 star;                          // sin^2, cos^2 of the camera's point (K - F_o; vortical F)
     KerrPoint cam;                      // the camera's point of psi (v)
-    float phi_comp, phi_p0;             // G_phi's complete Pi and the camera's (kerr_angular_phi_start)
+    float phi_comp, phi_p0;             // G_phi's complete Pi and the camera's (kerr_phi_start)
     Agm agm;
 };
 
@@ -758,42 +701,64 @@ float kerr_cos_at(KerrAngular g, float tau) {
     return kerr_cos_of(g, kerr_point_any((g.vortical ? g.v0 : g.psi0) + g.w * tau, g.agm, g.kk));
 }
 
-// G_phi's parts fixed for the path, once (the thin disk's light may stop
-// it twice): the complete Pi (for each period of the polar motion crossed)
-// and Pi at the camera's point.
-void kerr_angular_phi_start(inout KerrAngular g) {
-    KerrPoint e0 = g.cam;
+// The R_J that the common paths need at a point, four at once: those of
+// kerr_i_phi's case-2 form at the radial point er for both horizons (where
+// that form holds), and those of G_phi's Pi(-N) at two polar points ea, eb
+// (ordinary motion). Where not needed, arguments that end the duplication
+// at once.
+vec4 kerr_rj_point(KerrRadial k, KerrAngular g, KerrPoint er, KerrPoint ea, KerrPoint eb) {
+    bool radial = kerr_i_phi_case2(k), polar = !g.vortical;
+    float bn = g.u_plus / g.one_m_up;
+    vec3 qa = polar ? kerr_pi_neg_args(bn, ea, g.m, g.mc) : vec3(1.0);
+    vec3 qb = polar ? kerr_pi_neg_args(bn, eb, g.m, g.mc) : vec3(1.0);
+    vec2 x = vec2(radial ? er.c2 : 1.0), y = vec2(radial ? k.mc + k.m * er.c2 : 1.0);
+    vec2 p = radial ? 1.0 - kerr_i_phi_n(k) * er.s * er.s : vec2(1.0);
+    return kerr_rj(vec4(x, qa.x, qb.x), vec4(y, qa.y, qb.y), vec4(p, qa.z, qb.z));
+}
+
+// The parts of I_phi and G_phi fixed for the path, once (the thin disk's
+// light may stop it twice): I_phi's camera part, G_phi's complete Pi (for
+// each period of the polar motion crossed) and its Pi at the camera's point.
+void kerr_phi_start(inout KerrRadial k, inout KerrAngular g) {
+    KerrPoint e0 = g.cam, top = kerr_point_k(g.kk);
+    vec4 rj = kerr_rj_point(k, g, k.cam, top, e0);
+    k.q_cam = -k.cam.sgn * k.cam.s * k.cam.s * k.cam.s * rj.xy;
     float pi0;
     if (!KERR_COMMON_ONLY && g.vortical) {
         float n = g.m / (1.0 - g.u_minus);
         g.phi_comp = kerr_pi_complete(n, g.kk, g.m, g.mc);
         pi0 = kerr_pi(n, e0, g.m, g.mc);
     } else {
-        float n = g.u_plus / g.one_m_up;
-        g.phi_comp = kerr_pi_neg_complete(n, g.kk, g.m, g.mc);
-        pi0 = kerr_pi_neg(n, e0, g.m, g.mc);
+        float bn = g.u_plus / g.one_m_up;
+        g.phi_comp = kerr_pi_neg_of(bn, top, g.m, g.mc, rj.z);
+        pi0 = kerr_pi_neg_of(bn, e0, g.m, g.mc, rj.w);
     }
     g.phi_p0 = (e0.j != 0.0 ? 2.0 * e0.j * g.phi_comp : 0.0) + e0.sgn * pi0;
 }
 
-// cos theta and lambda G_phi (lambda times the integral of 1 / sin^2 theta
-// over Mino time) at Mino time tau (kerr_angular_phi_start first).
-vec2 kerr_angular_at(KerrAngular g, float lam, float tau) {
+// cos theta at Mino time tau and the azimuth swept from the camera there,
+// -(I_phi + lambda G_phi) (lambda times the integral of 1 / sin^2 theta);
+// e1: the radial point at tau (kerr_phi_start first). An equatorial ray
+// (eta = 0 in the plane) keeps theta = pi/2 and lambda G_phi = lambda tau.
+vec2 kerr_end(KerrRadial k, KerrAngular g, float a, float lam, float eta, float tau, KerrPoint e1) {
     float u0 = g.vortical ? g.v0 : g.psi0;
     float u1 = u0 + g.w * tau;
-    KerrPoint e1 = kerr_point_any(u1, g.agm, g.kk);
-    float two_k = 2.0 * g.kk;
-    float cos_t = kerr_cos_of(g, e1);
+    KerrPoint ep = kerr_point_any(u1, g.agm, g.kk);
+    vec4 rj = kerr_rj_point(k, g, e1, ep, ep);
+    float i_phi = kerr_i_phi(k, a, tau, e1, rj.xy);
+    if (eta == 0.0) return vec2(0.0, -i_phi - lam * tau);
+    float two_k = 2.0 * g.kk, lg;
     if (!KERR_COMMON_ONLY && g.vortical) {
-        if (abs(lam) < 1e-12) return vec2(cos_t, PI * (floor((u1 - g.kk) / two_k) - floor((u0 - g.kk) / two_k)));
         float n = g.m / (1.0 - g.u_minus);
-        float p1 = (e1.j != 0.0 ? 2.0 * e1.j * g.phi_comp : 0.0) + e1.sgn * kerr_pi(n, e1, g.m, g.mc);
-        return vec2(cos_t, g.coef * ((u1 - u0) + g.u_minus / (1.0 - g.u_minus) * (p1 - g.phi_p0)));
+        float p1 = (ep.j != 0.0 ? 2.0 * ep.j * g.phi_comp : 0.0) + ep.sgn * kerr_pi(n, ep, g.m, g.mc);
+        lg = abs(lam) < 1e-12 ? PI * (floor((u1 - g.kk) / two_k) - floor((u0 - g.kk) / two_k))
+                              : g.coef * ((u1 - u0) + g.u_minus / (1.0 - g.u_minus) * (p1 - g.phi_p0));
+    } else {
+        float bn = g.u_plus / g.one_m_up;
+        float p1 = (ep.j != 0.0 ? 2.0 * ep.j * g.phi_comp : 0.0) + ep.sgn * kerr_pi_neg_of(bn, ep, g.m, g.mc, rj.z);
+        lg = abs(lam) < 1e-12 ? PI * (floor(u1 / two_k) - floor(u0 / two_k)) : g.coef * (p1 - g.phi_p0);
     }
-    if (abs(lam) < 1e-12) return vec2(cos_t, PI * (floor(u1 / two_k) - floor(u0 / two_k)));
-    float n = g.u_plus / g.one_m_up;
-    float p1 = (e1.j != 0.0 ? 2.0 * e1.j * g.phi_comp : 0.0) + e1.sgn * kerr_pi_neg(n, e1, g.m, g.mc);
-    return vec2(cos_t, g.coef * (p1 - g.phi_p0));
+    return vec2(kerr_cos_of(g, ep), -i_phi - lg);
 }
 
 // --------------------------------------------------------------- the volumetric disk
@@ -866,7 +831,7 @@ vec3 kerr_world(float r, float ct, float dphi, float a, float cp, float sp, floa
 const int VOLUME_CROSSINGS = 4;
 
 // lambda G_phi at Mino time tau for the ordinary polar motion (as
-// kerr_angular_at), with the camera's part p0 and the complete integral
+// kerr_end), with the camera's part p0 and the complete integral
 // comp computed once for the path.
 float kerr_polar_phi(KerrAngular g, float lam, float tau, float comp, float p0) {
     float u1 = g.psi0 + g.w * tau;
@@ -1083,16 +1048,14 @@ Hit metric_trace(vec3 x, vec3 d) {
     vec4 sn2 = vec4(rad.rf_cam.z, rad.rf_end.z, ang.rf.z, 0.0);
     vec4 f = sqrt(sn2) * carlson_rf4(vec4(rad.rf_cam.x, rad.rf_end.x, ang.rf.x, 1.0),
                                      vec4(rad.rf_cam.y, rad.rf_end.y, ang.rf.y, 1.0));
-    if (rad.kcase != 4) kerr_radial_ends(rad, f.x, f.y);
-    else kerr_radial_ends(rad, 0.0, 0.0);
+    kerr_radial_ends(rad, f.x, f.y);  // (case 4: sin^2 = 0 at both ends, so f = 0)
     kerr_angular_start(ang, f.z);
     // The split's trace pass: the rarer paths to the second pass.
     if (KERR_COMMON_ONLY && (rad.kcase == 4 || eta < 0.0 || KERR_NEAR_EDGE(rad))) {
         hit.deferred = true;
         return hit;
     }
-    kerr_i_phi_start(rad);
-    kerr_angular_phi_start(ang);
+    kerr_phi_start(rad, ang);
     float af = float(a), lamf = float(lam);
     // The shifts are measured by the camera's ZAMO (disk.glsl, volume.glsl).
     kerr_zamo_g = float((1.0 - omega * lam) / alpha);
@@ -1141,10 +1104,9 @@ Hit metric_trace(vec3 x, vec3 d) {
             hit.deferred = true;  // I_phi needs kerr_j: to the second pass
             return hit;
         }
-        // The azimuth there: phi = phi_o + dphi (an equatorial ray, eta = 0
-        // in the plane, keeps theta = pi/2 and lambda G_phi = lambda tau).
-        vec2 ct = eta != 0.0 ? kerr_angular_at(ang, lamf, t) : vec2(0.0, lamf * t);
-        float dphi = -kerr_i_phi(rad, af, lamf, t, end) - ct.y;
+        // The azimuth there: phi = phi_o + dphi.
+        vec2 ct = kerr_end(rad, ang, af, lamf, float(eta), t, end);
+        float dphi = ct.y;
         vec2 cs = cos_sin_precise(dphi);
         float cph = cpf * cs.x - spf * cs.y, sph = spf * cs.x + cpf * cs.y;
         if (on_disk) {
