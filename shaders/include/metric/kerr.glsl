@@ -73,8 +73,10 @@ const bool KERR_COMMON_ONLY = DISK_STAGE == DISK_STAGE_TRACE;
 // brings x and y some four times closer: from |s| <= 1 to below 0.004,
 // s = (y - x) / (x + 2 y)) and its series to s^5 (error below 1e-13
 // there): no inverse trigonometric or hyperbolic function and no branch
-// (atan, atanh and their series would all run on a CPU driver). Written once
-// for one and for four at once (KERR_RJ).
+// (atan, atanh and their series would all run on a CPU driver). And
+// R_C(1, 1 + e) for |e| < 0.03 (every duplication turn of R_J after the
+// first) by its series to e^6, error below 2e-12. Written once (the macro)
+// for one integral and for three or four at once (KERR_RJ).
 #define KERR_RC(T)                                                                 \
     T kerr_rc_dup(T x, T y) {                                                      \
         [[unroll]] for (int i = 0; i < 4; ++i) {                                   \
@@ -85,8 +87,13 @@ const bool KERR_COMMON_ONLY = DISK_STAGE == DISK_STAGE_TRACE;
         T imu = 3.0 / (x + 2.0 * y);                                               \
         T s = (1.0 / 3.0) * (y - x) * imu;                                         \
         return (1.0 + s * s * (0.3 + s * (1.0 / 7.0 + s * (0.375 + s * (9.0 / 22.0))))) * sqrt(imu); \
+    }                                                                              \
+    T kerr_rc_series(T e) {                                                        \
+        return 1.0 + e * (-1.0 / 3.0 + e * (0.2 + e * (-1.0 / 7.0 + e * (1.0 / 9.0 \
+                   + e * (-1.0 / 11.0 + e * (1.0 / 13.0))))));                     \
     }
 KERR_RC(float)
+KERR_RC(vec3)
 KERR_RC(vec4)
 
 // R_C(x, y), x >= 0, y != 0, the Cauchy principal value for y < 0 (DLMF
@@ -95,18 +102,13 @@ float kerr_rc(float x, float y) {
     return (y < 0.0 ? sqrt(x / (x - y)) : 1.0) * kerr_rc_dup(y < 0.0 ? x - y : x, abs(y));
 }
 
-// R_C(1, 1 + e) for |e| < 0.03 (every duplication turn of R_J after the
-// first): its series to e^6, error below 2e-12.
-float kerr_rc_series(float e) {
-    return 1.0 + e * (-1.0 / 3.0 + e * (0.2 + e * (-1.0 / 7.0 + e * (1.0 / 9.0 + e * (-1.0 / 11.0 + e * (1.0 / 13.0))))));
-}
-
-vec4 kerr_rc_series(vec4 e) {
-    return 1.0 + e * (-1.0 / 3.0 + e * (0.2 + e * (-1.0 / 7.0 + e * (1.0 / 9.0 + e * (-1.0 / 11.0 + e * (1.0 / 13.0))))));
-}
-
+// R_J's duplication is done when every argument is within 0.1 of the mean.
 bool kerr_rj_done(float spread, float a) {
     return spread < 0.1 * a;
+}
+
+bool kerr_rj_done(vec3 spread, vec3 a) {
+    return all(lessThan(spread, 0.1 * a));
 }
 
 bool kerr_rj_done(vec4 spread, vec4 a) {
@@ -123,7 +125,7 @@ bool kerr_rj_done(vec4 spread, vec4 a) {
 // loop (on a CPU driver a loop's body runs all of itself every turn).
 //
 // Written once (the macro) for one integral and for four at once: a path's
-// integrals at one point come as a vec4 (one loop instead of four).
+// integrals come as a vec3 or vec4 (one loop instead of three or four).
 #define KERR_RJ(T)                                                                                   \
     T kerr_rj(T x, T y, T p) {                                                                       \
         T z = T(1.0), sum, a;                                                                        \
@@ -167,6 +169,7 @@ bool kerr_rj_done(vec4 spread, vec4 a) {
         return fac * ia * sqrt(ia) * series + 6.0 * sum;                                             \
     }
 KERR_RJ(float)
+KERR_RJ(vec3)
 KERR_RJ(vec4)
 
 // A point of an elliptic integral: amplitude phi in [0, pi/2] as s =
@@ -598,7 +601,8 @@ struct KerrAngular {
     float psi0;                         // psi at the camera (ordinary)
     vec2 star;                          // sin^2, cos^2 of the camera's point (K - F_o; vortical F)
     KerrPoint cam;                      // the camera's point of psi (v)
-    float phi_comp, phi_p0;             // G_phi's complete Pi and the camera's (kerr_phi_start)
+    float phi_comp, phi_p0;             // G_phi's complete Pi and the camera's (kerr_phi_start; phi_p0:
+                                        // vortical and volumetric only)
     Agm agm;
 };
 
@@ -701,39 +705,48 @@ float kerr_cos_at(KerrAngular g, float tau) {
     return kerr_cos_of(g, kerr_point_any((g.vortical ? g.v0 : g.psi0) + g.w * tau, g.agm, g.kk));
 }
 
-// The R_J that the common paths need at a point, four at once: those of
-// kerr_i_phi's case-2 form at the radial point er for both horizons (where
-// that form holds), and those of G_phi's Pi(-N) at two polar points ea, eb
-// (ordinary motion). Where not needed, arguments that end the duplication
-// at once.
-vec4 kerr_rj_point(KerrRadial k, KerrAngular g, KerrPoint er, KerrPoint ea, KerrPoint eb) {
+// The arguments (x, y, p) of the R_J that the common paths need, one
+// integral a lane: kerr_i_phi's case-2 form at the radial point er for both
+// horizons (where that form holds), and G_phi's Pi(-N) at two polar points
+// ea, eb (ordinary motion). Where not needed, arguments that end the
+// duplication at once.
+void kerr_rj_args(KerrRadial k, KerrAngular g, KerrPoint er, KerrPoint ea, KerrPoint eb, out vec4 x, out vec4 y,
+                  out vec4 p) {
     bool radial = kerr_i_phi_case2(k), polar = !g.vortical;
     float bn = g.u_plus / g.one_m_up;
     vec3 qa = polar ? kerr_pi_neg_args(bn, ea, g.m, g.mc) : vec3(1.0);
     vec3 qb = polar ? kerr_pi_neg_args(bn, eb, g.m, g.mc) : vec3(1.0);
-    vec2 x = vec2(radial ? er.c2 : 1.0), y = vec2(radial ? k.mc + k.m * er.c2 : 1.0);
-    vec2 p = radial ? 1.0 - kerr_i_phi_n(k) * er.s * er.s : vec2(1.0);
-    return kerr_rj(vec4(x, qa.x, qb.x), vec4(y, qa.y, qb.y), vec4(p, qa.z, qb.z));
+    x = vec4(vec2(radial ? er.c2 : 1.0), qa.x, qb.x);
+    y = vec4(vec2(radial ? k.mc + k.m * er.c2 : 1.0), qa.y, qb.y);
+    p = vec4(radial ? 1.0 - kerr_i_phi_n(k) * er.s * er.s : vec2(1.0), qa.z, qb.z);
+}
+
+// G_phi's Pi from the camera to the polar point e (Pi there: pi), the
+// periods 2K taken off counted.
+float kerr_polar_pi(KerrAngular g, KerrPoint e, float pi) {
+    return (e.j != 0.0 ? 2.0 * e.j * g.phi_comp : 0.0) + e.sgn * pi;
 }
 
 // The parts of I_phi and G_phi fixed for the path, once (the thin disk's
-// light may stop it twice): I_phi's camera part, G_phi's complete Pi (for
-// each period of the polar motion crossed) and its Pi at the camera's point.
+// light may stop it twice): I_phi's camera part and G_phi's complete Pi
+// (for each period of the polar motion crossed), three R_J in one call.
+// G_phi's Pi at the camera comes with the path's end (kerr_end), but for
+// the volumetric disk, which needs it first.
 void kerr_phi_start(inout KerrRadial k, inout KerrAngular g) {
     KerrPoint e0 = g.cam, top = kerr_point_k(g.kk);
-    vec4 rj = kerr_rj_point(k, g, k.cam, top, e0);
+    vec4 x, y, p;
+    kerr_rj_args(k, g, k.cam, top, top, x, y, p);
+    vec3 rj = kerr_rj(x.xyz, y.xyz, p.xyz);
     k.q_cam = -k.cam.sgn * k.cam.s * k.cam.s * k.cam.s * rj.xy;
-    float pi0;
     if (!KERR_COMMON_ONLY && g.vortical) {
         float n = g.m / (1.0 - g.u_minus);
         g.phi_comp = kerr_pi_complete(n, g.kk, g.m, g.mc);
-        pi0 = kerr_pi(n, e0, g.m, g.mc);
+        g.phi_p0 = kerr_polar_pi(g, e0, kerr_pi(n, e0, g.m, g.mc));
     } else {
         float bn = g.u_plus / g.one_m_up;
         g.phi_comp = kerr_pi_neg_of(bn, top, g.m, g.mc, rj.z);
-        pi0 = kerr_pi_neg_of(bn, e0, g.m, g.mc, rj.w);
+        if (volumetric()) g.phi_p0 = kerr_polar_pi(g, e0, kerr_pi_neg(bn, e0, g.m, g.mc));
     }
-    g.phi_p0 = (e0.j != 0.0 ? 2.0 * e0.j * g.phi_comp : 0.0) + e0.sgn * pi0;
 }
 
 // cos theta at Mino time tau and the azimuth swept from the camera there,
@@ -744,19 +757,22 @@ vec2 kerr_end(KerrRadial k, KerrAngular g, float a, float lam, float eta, float 
     float u0 = g.vortical ? g.v0 : g.psi0;
     float u1 = u0 + g.w * tau;
     KerrPoint ep = kerr_point_any(u1, g.agm, g.kk);
-    vec4 rj = kerr_rj_point(k, g, e1, ep, ep);
+    vec4 x, y, p;
+    kerr_rj_args(k, g, e1, ep, g.cam, x, y, p);
+    vec4 rj = kerr_rj(x, y, p);
     float i_phi = kerr_i_phi(k, a, tau, e1, rj.xy);
     if (eta == 0.0) return vec2(0.0, -i_phi - lam * tau);
     float two_k = 2.0 * g.kk, lg;
     if (!KERR_COMMON_ONLY && g.vortical) {
         float n = g.m / (1.0 - g.u_minus);
-        float p1 = (ep.j != 0.0 ? 2.0 * ep.j * g.phi_comp : 0.0) + ep.sgn * kerr_pi(n, ep, g.m, g.mc);
+        float p1 = kerr_polar_pi(g, ep, kerr_pi(n, ep, g.m, g.mc));
         lg = abs(lam) < 1e-12 ? PI * (floor((u1 - g.kk) / two_k) - floor((u0 - g.kk) / two_k))
                               : g.coef * ((u1 - u0) + g.u_minus / (1.0 - g.u_minus) * (p1 - g.phi_p0));
     } else {
         float bn = g.u_plus / g.one_m_up;
-        float p1 = (ep.j != 0.0 ? 2.0 * ep.j * g.phi_comp : 0.0) + ep.sgn * kerr_pi_neg_of(bn, ep, g.m, g.mc, rj.z);
-        lg = abs(lam) < 1e-12 ? PI * (floor(u1 / two_k) - floor(u0 / two_k)) : g.coef * (p1 - g.phi_p0);
+        float p1 = kerr_polar_pi(g, ep, kerr_pi_neg_of(bn, ep, g.m, g.mc, rj.z));
+        float p0 = kerr_polar_pi(g, g.cam, kerr_pi_neg_of(bn, g.cam, g.m, g.mc, rj.w));
+        lg = abs(lam) < 1e-12 ? PI * (floor(u1 / two_k) - floor(u0 / two_k)) : g.coef * (p1 - p0);
     }
     return vec2(kerr_cos_of(g, ep), -i_phi - lg);
 }
