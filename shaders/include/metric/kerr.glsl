@@ -124,8 +124,8 @@ bool kerr_rj_done(vec4 spread, vec4 a) {
 // series, whose error there is below 3e-8. The first turn comes before the
 // loop (on a CPU driver a loop's body runs all of itself every turn).
 //
-// Written once (the macro) for one integral and for four at once: a path's
-// integrals come as a vec3 or vec4 (one loop instead of three or four).
+// Written once (the macro) for one integral and for three or four at once:
+// a path's integrals at one point come in one loop instead of three or four.
 #define KERR_RJ(T)                                                                                   \
     T kerr_rj(T x, T y, T p) {                                                                       \
         T z = T(1.0), sum, a;                                                                        \
@@ -134,7 +134,7 @@ bool kerr_rj_done(vec4 spread, vec4 a) {
             T sx = sqrt(x), sy = sqrt(y), sp = sqrt(p);                                              \
             T l = sx * (sy + 1.0) + sy;                                                              \
             T id = 1.0 / ((sp + sx) * (sp + sy) * (sp + 1.0));                                       \
-            sum = id * kerr_rc_dup(T(1.0), 1.0 + (sp - sx) * (sp - sy) * (sp - 1.0) * id);                \
+            sum = id * kerr_rc_dup(T(1.0), 1.0 + (sp - sx) * (sp - sy) * (sp - 1.0) * id);           \
             x = 0.25 * (x + l);                                                                      \
             y = 0.25 * (y + l);                                                                      \
             z = 0.25 * (z + l);                                                                      \
@@ -847,14 +847,14 @@ vec3 kerr_world(float r, float ct, float dphi, float a, float cp, float sp, floa
 const int VOLUME_CROSSINGS = 4;
 
 // lambda G_phi at Mino time tau for the ordinary polar motion (as
-// kerr_end), with the camera's part p0 and the complete integral
-// comp computed once for the path.
-float kerr_polar_phi(KerrAngular g, float lam, float tau, float comp, float p0) {
+// kerr_end), from the camera's part and the complete integral that
+// kerr_phi_start computed once for the path.
+float kerr_polar_phi(KerrAngular g, float lam, float tau) {
     float u1 = g.psi0 + g.w * tau;
     if (abs(lam) < 1e-12) return PI * (floor(u1 / (2.0 * g.kk)) - floor(g.psi0 / (2.0 * g.kk)));
     KerrPoint e1 = kerr_point_any(u1, g.agm, g.kk);
     float n = g.u_plus / g.one_m_up;
-    return g.coef * (2.0 * e1.j * comp + e1.sgn * kerr_pi_neg(n, e1, g.m, g.mc) - p0);
+    return g.coef * (kerr_polar_pi(g, e1, kerr_pi_neg(n, e1, g.m, g.mc)) - g.phi_p0);
 }
 
 // sn, cn and dn of any real argument u (sn and cn change sign every 2K);
@@ -926,7 +926,7 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
         float phr0 = phr_known + gh * gap;
         // The polar part at the window's start in closed form (near the
         // axis its rate is a narrow spike no rule would follow).
-        float pht0 = -kerr_polar_phi(ang, lam, ta, ang.phi_comp, ang.phi_p0);
+        float pht0 = -kerr_polar_phi(ang, lam, ta);
         // Five points a step h apart: r and theta at the first and the
         // step in closed form, the rest by the addition theorem.
         float h = 0.25 * (tb - ta);
