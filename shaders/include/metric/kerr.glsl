@@ -718,7 +718,8 @@ float kerr_cos_at(KerrAngular g, float tau) {
 // The arguments (x, y, p) of the R_J that the common paths need, one
 // integral a lane: kerr_i_phi's case-2 form at the radial point er for both
 // horizons (where that form holds), and G_phi's Pi(-N) at two polar points
-// ea, eb (ordinary motion). Where not needed, arguments that end the
+// ea, eb (ordinary motion; the path's end has one, passes it twice and
+// takes the first three). Where not needed, arguments that end the
 // duplication at once.
 void kerr_rj_args(KerrRadial k, KerrAngular g, KerrPoint er, KerrPoint ea, KerrPoint eb, out vec4 x, out vec4 y,
                   out vec4 p) {
