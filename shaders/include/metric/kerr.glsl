@@ -131,7 +131,12 @@ bool kerr_rj_done(vec4 spread, vec4 a) {
 // seventh order, whose error there is below 2.2e-7 (the fifth order's, at
 // 0.1, was below 1.5e-7: a turn of the loop fewer for the same accuracy,
 // about one in six; measured against mpmath). The first turn comes before
-// the loop (on a CPU driver a loop's body runs all of itself every turn).
+// the loop (on a CPU driver a loop's body runs all of itself every turn),
+// and the loop's body runs at least once, its test after it: a CPU driver
+// runs a loop's body until no lane of the SIMD group is left, so a test
+// before it cost one body more than the longest lane needs (nearly every
+// SIMD group needs exactly one; a turn more only brings the arguments
+// closer).
 //
 // Written once (the macro) for one integral and for three or four at once:
 // a path's integrals at one point come in one loop instead of three or four.
@@ -150,8 +155,7 @@ bool kerr_rj_done(vec4 spread, vec4 a) {
             p = 0.25 * (p + l);                                                                      \
             a = 0.2 * (x + y + z + p + p);                                                           \
         }                                                                                            \
-        bool done = kerr_rj_done(max(max(abs(a - x), abs(a - y)), max(abs(a - z), abs(a - p))), a); \
-        [[dont_unroll]] for (int i = 1; i < 16 && !done; ++i) {                                      \
+        [[dont_unroll]] for (int i = 1; i < 16; ++i) {                                               \
             T sx = sqrt(x), sy = sqrt(y), sz = sqrt(z), sp = sqrt(p);                                \
             T l = sx * (sy + sz) + sy * sz;                                                          \
             T id = 1.0 / ((sp + sx) * (sp + sy) * (sp + sz));                                        \
@@ -162,7 +166,7 @@ bool kerr_rj_done(vec4 spread, vec4 a) {
             z = 0.25 * (z + l);                                                                      \
             p = 0.25 * (p + l);                                                                      \
             a = 0.2 * (x + y + z + p + p);                                                           \
-            done = kerr_rj_done(max(max(abs(a - x), abs(a - y)), max(abs(a - z), abs(a - p))), a); \
+            if (kerr_rj_done(max(max(abs(a - x), abs(a - y)), max(abs(a - z), abs(a - p))), a)) break; \
         }                                                                                            \
         /* The series at the mean (DLMF 19.36.2), 4^-m a^(-3/2) times it. */                         \
         T ia = 1.0 / a;                                                                              \
@@ -356,14 +360,14 @@ KerrRadial kerr_radial(kreal a, kreal lam, kreal eta, kreal r_o, float s_r) {
         kreal u1 = -q / 2.0 + sd, u2 = -q / 2.0 - sd;
         kreal c1 = kreal(sign(float(u1)) * pow(abs(float(u1)), 1.0 / 3.0));
         kreal c2 = kreal(sign(float(u2)) * pow(abs(float(u2)), 1.0 / 3.0));
-        [[dont_unroll]] for (int i = 0; i < KERR_CBRT_TURNS; ++i) {
+        [[unroll]] for (int i = 0; i < KERR_CBRT_TURNS; ++i) {
             if (c1 != 0.0) c1 -= (c1 * c1 * c1 - u1) / (3.0 * c1 * c1);
             if (c2 != 0.0) c2 -= (c2 * c2 * c2 - u2) / (3.0 * c2 * c2);
         }
         w = float(c1 + c2);
     }
     kreal zz = kreal(w) / 2.0 - ca / 6.0;
-    [[dont_unroll]] for (int i = 0; i < KERR_RESOLVENT_TURNS; ++i) {
+    [[unroll]] for (int i = 0; i < KERR_RESOLVENT_TURNS; ++i) {
         kreal f = ((16.0 * zz + 8.0 * ca) * zz + (ca * ca - 4.0 * cc)) * zz - cb * cb / 4.0;
         kreal df = (48.0 * zz + 16.0 * ca) * zz + (ca * ca - 4.0 * cc);
         if (df != 0.0) zz -= f / df;
@@ -557,11 +561,12 @@ float kerr_j(KerrRadial k, float rh, float tau, KerrPoint e0, KerrPoint e1) {
     float gam = k.m + al * al / (1.0 - al * al);
     float pc = e0.fold || e1.fold ? kerr_pi_complete(n, k.kk, k.m, k.mc) : 0.0;
     float rr[2];
-    [[dont_unroll]] for (int i = 0; i < 2; ++i) {
+    int i = 0;
+    [[dont_unroll]] do {
         KerrPoint e = i == 0 ? e0 : e1;
         float w = e.s * inversesqrt(k.mc + k.m * e.c2);
         rr[i] = (kerr_pi_signed(n, e, pc, k) - al * w * kerr_rc(1.0, 1.0 + gam * w * w)) / (1.0 - al * al);
-    }
+    } while (++i < 2);
     return c1 * tau + k.s_r / k.rate * c2 * (rr[1] - rr[0]);
 }
 
@@ -589,10 +594,13 @@ float kerr_i_phi(KerrRadial k, float a, float tau, KerrPoint e1, vec2 rj) {
     }
     if (KERR_COMMON_ONLY) return 0.0;  // (metric_trace deferred the path)
     float sum = 0.0;
-    // One loop over the two horizons: one copy of kerr_j in the shader.
-    [[dont_unroll]] for (int i = 0; i < 2; ++i) {
+    // One loop over the two horizons: one copy of kerr_j in the shader
+    // (tested after its body: a CPU driver runs a loop's body until no lane
+    // is left, so a test before it costs a third kerr_j).
+    int i = 0;
+    [[dont_unroll]] do {
         sum += k.ah[i] * kerr_j(k, k.rh[i], tau, k.cam, e1);
-    }
+    } while (++i < 2);
     return sum;
 }
 
@@ -1121,6 +1129,11 @@ Hit metric_trace(vec3 x, vec3 d) {
                     from = n + 1;
                     break;
                 }
+                // The next crossing's test again after the body: a CPU
+                // driver runs a loop's body until no lane of the SIMD group
+                // is left, so the test at the top alone costs one body more
+                // than the longest lane needs.
+                if (kerr_crossing_tau(ang, n + 1) >= rad.tau_end) break;
             }
         }
         if (!on_disk && rad.captured) return hit;
