@@ -507,10 +507,11 @@ float kerr_r_of(KerrRadial k, KerrPoint e) {
 // closed form is 0/0 (r_h = r_- next to r2).
 float kerr_j_quadrature(KerrRadial k, float rh, float tau) {
     float sum = 0.0;
-    [[dont_unroll]] for (int i = 0; i < 16; ++i) {
+    int i = 0;
+    [[dont_unroll]] do {
         vec2 xw = kerr_gl_node(i);
         sum += xw.y / (kerr_r_of(k, kerr_radial_point(k, 0.5 * tau * (xw.x + 1.0))) - rh);
-    }
+    } while (++i < 16);
     return 0.5 * tau * sum;
 }
 
@@ -915,6 +916,11 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
     [[dont_unroll]] for (int j = 0; j < VOLUME_CROSSINGS; ++j) {
         float tc = kerr_crossing_tau(ang, n0 + j);
         if (tc - half_gap >= rad.tau_end) break;
+        // Whether the next window lies past the path's end, tested again
+        // at the body's exits: a CPU driver runs a loop's body until no
+        // lane of the SIMD group is left, so a test at the top alone costs
+        // one body more than the longest lane needs.
+        bool last = kerr_crossing_tau(ang, n0 + j + 1) - half_gap >= rad.tau_end;
         float rn = kerr_r_of(rad, kerr_radial_point(rad, min(max(tc, 0.0), rad.tau_end)));
         float half_w = min(1.3 * H / (max(rn, 1.0) * rate_y), half_gap);
         // Only where the path is inside the outer radius (about): the gas
@@ -931,15 +937,19 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
         bool grows_before = rad.kcase == 2 ? xc < 0.0 : rad.kcase != 3 || rad.s_r < 0.0;
         float ta = max(tc - (grows_before ? cap : half_w), t_known);
         float tb = min(tc + (grows_after ? cap : half_w), rad.tau_end);
-        if (tb <= ta || rn > r_far) continue;
+        if (tb <= ta || rn > r_far) {
+            if (last) return;
+            continue;
+        }
         // The radial part across the gap from the last window (two-point
         // Gauss-Legendre: r(tau) is smooth there).
         float gm = 0.5 * (ta + t_known), gh = 0.5 * (ta - t_known);
         float gap = 0.0;
-        [[dont_unroll]] for (int k = -1; k <= 1; k += 2) {
+        int k = -1;
+        [[dont_unroll]] do {
             float r = kerr_r_of(rad, kerr_radial_point(rad, gm + float(k) * 0.57735027 * gh));
             gap += kerr_phi_rate_r(a, lam, r, r_h);
-        }
+        } while ((k += 2) <= 1);
         float phr0 = phr_known + gh * gap;
         // The polar part at the window's start in closed form (near the
         // axis its rate is a narrow spike no rule would follow).
@@ -953,14 +963,16 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
         vec3 et = kerr_scd(ang.psi0 + ang.w * ta, ang.agm, ang.kk, ang.m, ang.mc);
         vec3 dt = kerr_scd(ang.w * h, ang.agm, ang.kk, ang.m, ang.mc);
         float sq_up = sqrt(ang.u_plus);
-        float rk[5], ck[5], rate[5];
-        [[dont_unroll]] for (int k = 0; k < 5; ++k) {
+        float rk[5], ck[5], rate[5], q[5];
+        k = 0;
+        [[dont_unroll]] do {
             rk[k] = kerr_r_scd(rad, er);
             ck[k] = sq_up * et.y;
-            rate[k] = kerr_phi_rate_r(a, lam, rk[k], r_h) + kerr_phi_rate_th(lam, ck[k]);
+            q[k] = kerr_phi_rate_r(a, lam, rk[k], r_h);
+            rate[k] = q[k] + kerr_phi_rate_th(lam, ck[k]);
             er = kerr_scd_add(er, dr, rad.m);
             et = kerr_scd_add(et, dt, ang.m);
-        }
+        } while (++k < 5);
         // Across the window (near the equator, where both rates are
         // smooth): Simpson's rule to the even points, the three-point rule
         // exact for a quadratic rate to the odd ones.
@@ -973,16 +985,17 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
         ph[3] = ph2 + h / 12.0 * (5.0 * rate[2] + 8.0 * rate[3] - rate[4]);
         ph[4] = ph2 + h / 3.0 * (rate[2] + 4.0 * rate[3] + rate[4]);
         // The radial part alone carried on to the next gap.
-        float q[5];
-        [[dont_unroll]] for (int k = 0; k < 5; ++k) q[k] = kerr_phi_rate_r(a, lam, rk[k], r_h);
         phr_known = phr0 + h / 3.0 * (q[0] + 4.0 * q[1] + 2.0 * q[2] + 4.0 * q[3] + q[4]);
         t_known = tb;
         // Points past r_far (a window reaching the end of an escaping path,
         // at infinity) are drawn in to it: no gas there, and finite chords.
         vec3 pts[5];
-        [[dont_unroll]] for (int k = 0; k < 5; ++k) pts[k] = kerr_world(min(rk[k], r_far), ck[k], ph[k], a, cp, sp, to_m);
+        k = 0;
+        [[dont_unroll]] do {
+            pts[k] = kerr_world(min(rk[k], r_far), ck[k], ph[k], a, cp, sp, to_m);
+        } while (++k < 5);
         volume_chords(pts, lam, hit.glow, hit.trans);
-        if (hit.trans < 0.003) return;
+        if (hit.trans < 0.003 || last) return;
     }
 }
 
@@ -998,7 +1011,8 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
 // good to a few per cent, as the non-rotating path's.
 float kerr_travel_time(KerrRadial rad, KerrAngular ang, float a, float lam, float tau) {
     float sum = 0.0;
-    [[dont_unroll]] for (int i = 0; i < 8; ++i) {
+    int i = 0;
+    [[dont_unroll]] do {
         float x = i < 4 ? -KERR_GL8_X[3 - i] : KERR_GL8_X[i - 4];
         float w = i < 4 ? KERR_GL8_W[3 - i] : KERR_GL8_W[i - 4];
         float tn = 0.5 * tau * (x + 1.0);
@@ -1007,7 +1021,7 @@ float kerr_travel_time(KerrRadial rad, KerrAngular ang, float a, float lam, floa
         float rho2 = r * r + a * a;
         float delta = max(r * r - 2.0 * r + a * a, 1e-6);
         sum += w * ((rho2 / delta) * (rho2 - a * lam) + a * (lam - a * (1.0 - ct * ct)));
-    }
+    } while (++i < 8);
     return 0.5 * tau * sum;
 }
 
