@@ -107,29 +107,36 @@ vec3 sky_stars(vec3 d, float pixel_angle) {
     // colour-table lookup at the end instead of one per star (stars rarely
     // overlap, and on a CPU driver every lookup in the loop is paid for
     // every cell of every pixel).
+    // One loop over the cells, its test after the body: a CPU driver runs a
+    // loop's body until no lane of the SIMD group is left, so nested loops
+    // tested before their bodies ran seven bodies for the 2x2 cells (the
+    // counters step at the top, so a `continue` keeps them).
     float flux_sum = 0.0, temp_sum = 0.0;
-    for (int j = lo; j <= 1; ++j) {
-        for (int i = lo; i <= 1; ++i) {
-            vec2 c = cell + vec2(i, j) * side;
-            if (any(lessThan(c, vec2(0.0))) || any(greaterThanEqual(c, vec2(CELLS)))) continue;
-            vec3 h = hash33(uvec3(uvec2(c), face * 7919u + 17u));
-            if (h.z > P.sky.scale) continue;  // star density: the chance a cell has a star
-            vec2 suv = ((c + 0.1 + 0.8 * h.xy) / CELLS) * 2.0 - 1.0;
-            vec3 s = face_dir(face, suv);
-            vec3 h2 = hash33(uvec3(uvec2(c) + 4099u, face + 101u));
-            // Brightness: power law, a few bright stars among many faint ones.
-            float is = inversesqrt(max(h2.x, 1e-12));   // h^-1.5 without pow
-            float flux = 5e-8 * min(is * is * is, 1000.0);
-            float temp = mix(2800.0, 14000.0, h2.y * h2.y);
-            // Chord length squared: the angle squared, for small angles.
-            vec3 delta = d - s;
-            float ang2 = dot(delta, delta);
-            if (ang2 > reach2) continue;
-            float w = exp(-0.5 * ang2 / (sigma * sigma)) / (6.2831853 * sigma * sigma);
-            flux_sum += flux * w;
-            temp_sum += flux * w * temp;
+    int i = lo - 1, j = lo;
+    do {
+        if (++i > 1) {
+            i = lo;
+            ++j;
         }
-    }
+        vec2 c = cell + vec2(i, j) * side;
+        if (any(lessThan(c, vec2(0.0))) || any(greaterThanEqual(c, vec2(CELLS)))) continue;
+        vec3 h = hash33(uvec3(uvec2(c), face * 7919u + 17u));
+        if (h.z > P.sky.scale) continue;  // star density: the chance a cell has a star
+        vec2 suv = ((c + 0.1 + 0.8 * h.xy) / CELLS) * 2.0 - 1.0;
+        vec3 s = face_dir(face, suv);
+        vec3 h2 = hash33(uvec3(uvec2(c) + 4099u, face + 101u));
+        // Brightness: power law, a few bright stars among many faint ones.
+        float is = inversesqrt(max(h2.x, 1e-12));   // h^-1.5 without pow
+        float flux = 5e-8 * min(is * is * is, 1000.0);
+        float temp = mix(2800.0, 14000.0, h2.y * h2.y);
+        // Chord length squared: the angle squared, for small angles.
+        vec3 delta = d - s;
+        float ang2 = dot(delta, delta);
+        if (ang2 > reach2) continue;
+        float w = exp(-0.5 * ang2 / (sigma * sigma)) / (6.2831853 * sigma * sigma);
+        flux_sum += flux * w;
+        temp_sum += flux * w * temp;
+    } while (i < 1 || j < 1);
     vec3 sum = flux_sum > 0.0 ? blackbody(temp_sum / flux_sum) * flux_sum : vec3(0.0);
     // A faint galaxy band along a great circle tilted 60 degrees to the disk,
     // with a little large-scale texture.
