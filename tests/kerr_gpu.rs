@@ -214,14 +214,22 @@ fn gpu_kerr_with_32_bit_roots_meets_the_goals_away_from_the_photon_region() {
         (0.5, [3.0, 5.0, -6.0], "falling"),
     ] {
         let mut f = compare(spin, position, observer, toward, false);
+        let most = |v: &[f64]| v.iter().copied().fold(0.0, f64::max);
+        let (dir_max, radius_max, g_max) = (most(&f.dir), most(&f.radius), most(&f.g));
         let (dir, radius, g) = (p99(&mut f.dir), p99(&mut f.radius), p99(&mut f.g));
         println!(
-            "32-bit roots: spin {spin:6} {position:?} {observer:9} rays {} (ill-conditioned {}), escaped/captured/disk {:?}: escape dir p99 {dir:.2e} rad, disk radius p99 {radius:.2e} rs, g p99 {g:.2e}",
+            "32-bit roots: spin {spin:6} {position:?} {observer:9} rays {} (ill-conditioned {}), escaped/captured/disk {:?}: escape dir p99 {dir:.2e} (max {dir_max:.2e}) rad, disk radius p99 {radius:.2e} (max {radius_max:.2e}) rs, g p99 {g:.2e} (max {g_max:.2e})",
             f.rays, f.ill_conditioned, f.outcomes
         );
         assert!(
             dir <= DIR_TOL && radius <= RADIUS_TOL && g <= G_TOL,
             "spin {spin} {position:?}"
+        );
+        // No stray path among the well-conditioned rays either (measured:
+        // every maximum within 3.3 times its p99).
+        assert!(
+            dir_max <= 10.0 * DIR_TOL && radius_max <= 10.0 * RADIUS_TOL && g_max <= 10.0 * G_TOL,
+            "spin {spin} {position:?}: a stray path"
         );
     }
 }

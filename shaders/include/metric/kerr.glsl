@@ -61,13 +61,16 @@ const bool KERR_COMMON_ONLY = DISK_STAGE == DISK_STAGE_TRACE;
 
 // The turns of Newton's method that polish the quartic's roots
 // (kerr_radial): on the cube roots of the Cardano estimate, then on the
-// resolvent cubic. In 32 bits the estimates are already within a few units
-// of the last place, so one turn on the resolvent would do (two are taken);
-// in 64 bits the estimates' 32-bit digits need doubling twice.
+// resolvent cubic. In 32 bits most estimates are already within a few
+// units of the last place, but not all: with two turns on the resolvent a
+// path at the top edge of gargantua's view (640x360) went astray and drew a
+// star the one-dispatch image (64-bit roots) does not have; three match it
+// (the Cardano cube roots need none). In 64 bits the estimates' 32-bit
+// digits need doubling twice.
 #ifdef KERR_F32_ROOTS
 #define kreal float
 #define kvec3 vec3
-const int KERR_CBRT_TURNS = 0, KERR_RESOLVENT_TURNS = 2;
+const int KERR_CBRT_TURNS = 0, KERR_RESOLVENT_TURNS = 3;
 #else
 #define kreal double
 #define kvec3 dvec3
