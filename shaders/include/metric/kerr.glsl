@@ -599,8 +599,7 @@ float kerr_i_phi(KerrRadial k, float a, float tau, KerrPoint e1, vec2 rj) {
     if (KERR_COMMON_ONLY) return 0.0;  // (metric_trace deferred the path)
     float sum = 0.0;
     // One loop over the two horizons: one copy of kerr_j in the shader
-    // (tested after its body: a CPU driver runs a loop's body until no lane
-    // is left, so a test before it costs a third kerr_j).
+    // (tested after its body, as kerr_rj's loop: before it, a third kerr_j).
     int i = 0;
     [[dont_unroll]] do {
         sum += k.ah[i] * kerr_j(k, k.rh[i], tau, k.cam, e1);
@@ -920,9 +919,8 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
         float tc = kerr_crossing_tau(ang, n0 + j);
         if (tc - half_gap >= rad.tau_end) break;
         // Whether the next window lies past the path's end, tested again
-        // at the body's exits: a CPU driver runs a loop's body until no
-        // lane of the SIMD group is left, so a test at the top alone costs
-        // one body more than the longest lane needs.
+        // at the body's exits (a test at the top alone costs a body more:
+        // see kerr_rj's loop).
         bool last = kerr_crossing_tau(ang, n0 + j + 1) - half_gap >= rad.tau_end;
         float rn = kerr_r_of(rad, kerr_radial_point(rad, min(max(tc, 0.0), rad.tau_end)));
         float half_w = min(1.3 * H / (max(rn, 1.0) * rate_y), half_gap);
@@ -1146,10 +1144,8 @@ Hit metric_trace(vec3 x, vec3 d) {
                     from = n + 1;
                     break;
                 }
-                // The next crossing's test again after the body: a CPU
-                // driver runs a loop's body until no lane of the SIMD group
-                // is left, so the test at the top alone costs one body more
-                // than the longest lane needs.
+                // The next crossing's test again after the body (the test
+                // at the top alone costs a body more: see kerr_rj's loop).
                 if (kerr_crossing_tau(ang, n + 1) >= rad.tau_end) break;
             }
         }
