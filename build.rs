@@ -22,7 +22,7 @@ const RAYMARCH_KINDS: &[(&[&str], &str)] = &[
     (&[], ""),
     (&["GEODESIC_AOV"], "_aov"),
     (&["NO_QUAD"], "_no_quad"),
-    (&["DISK_SPLIT"], "_split"),
+    (&["SPLIT_PASSES"], "_split"),
 ];
 
 /// Every (output stem, defines) build of the source file `name`.

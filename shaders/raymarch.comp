@@ -5,12 +5,14 @@
 // per build) until it falls into a horizon, hits the disk or escapes to the
 // sky. Writes linear HDR.
 //
-// With one hole and a thin disk the work is split in two dispatches
-// (DISK_STAGE): the trace pass shades every pixel's sky and lists the pixels
-// whose path crosses the disk's annulus; the disk pass, dispatched
-// indirectly over that list, adds the disk in front. On a CPU driver every
-// branch costs every pixel, so this is what keeps the disk's cost to the
-// pixels that show it. The spinning hole splits by its paths instead
+// On a CPU driver, which runs every branch for every pixel, the work of one
+// hole may be split in two dispatches (SPLIT_STAGE; src/deferred.rs says
+// when): a trace pass over every pixel and a deferred pass, dispatched
+// indirectly over the pixels the trace pass lists, for the rare, expensive
+// paths. A non-rotating hole defers its thin disk: the trace pass shades
+// every pixel's sky and lists the pixels whose path crosses the disk's
+// annulus; the disk pass adds the disk in front, so the disk's cost stays
+// with the pixels that show it. The spinning hole defers by its paths
 // (METRIC_SPLITS_RARE): the trace pass carries the common ones and lists
 // the 2x2 quads where a path needs the rest; the second pass redoes those
 // quads whole, ray differentials and all.
@@ -20,9 +22,9 @@
 #extension GL_KHR_shader_subgroup_quad : require
 #define RAY_DIFFERENTIALS
 #endif
-#ifdef DISK_SPLIT
-// The build of the split stages (raymarch_split.comp.spv): the disk pass's
-// work list, appended a SIMD group at a time. The other builds do not
+#ifdef SPLIT_PASSES
+// The build of the split stages (raymarch_split.comp.spv): the deferred
+// pass's work list, appended a SIMD group at a time (subgroup ballots). The other builds do not
 // declare its buffers, so no pipeline that leaves them alone touches them.
 #extension GL_KHR_shader_subgroup_ballot : require
 #endif
@@ -39,48 +41,48 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "metric.glsl"
 
 #ifdef GEODESIC_AOV
-// The geodesic AOV (the geodesic AOV table in the README): where each ray went.
+// The geodesic AOV (docs/physics.md, "The geodesic AOV"): where each ray went.
 layout(binding = 0, rgba32f) uniform writeonly image2D out_img;
 #else
 // Read back by the disk pass (the light behind the disk).
 layout(binding = 0, rgba16f) uniform image2D out_img;
 #endif
-#ifdef DISK_SPLIT
-// The disk pass's work: pixels packed x | y << 16, and their count.
-layout(std430, binding = 6) buffer DiskList {
+#ifdef SPLIT_PASSES
+// The deferred pass's work: pixels packed x | y << 16, and their count.
+layout(std430, binding = 6) buffer DeferredList {
     uint count;
     uint px[];
-} disk_list;
+} deferred_list;
 // Its indirect dispatch: workgroups of 64 listed pixels, in rows of at most
-// DISK_ROW workgroups (a device may allow as few as 65,535 a side, and a 4K
-// frame can list more groups of 64 than that; short rows also make every
-// frame of 720p and up use several, so the tests see them).
-#define DISK_ROW 256u
-layout(std430, binding = 7) buffer DiskDispatch {
+// DEFERRED_ROW workgroups (a device may allow as few as 65,535 a side, and
+// a 4K frame can list more groups of 64 than that; short rows also make
+// every frame of 720p and up use several, so the tests see them).
+#define DEFERRED_ROW 256u
+layout(std430, binding = 7) buffer DeferredDispatch {
     uint groups_x;
     uint groups_y;
     uint groups_z;
-} disk_dispatch;
+} deferred_dispatch;
 #endif
 
-#ifdef DISK_SPLIT
-// The trace pass: lists this SIMD group's pixels that need the disk pass
+#ifdef SPLIT_PASSES
+// The trace pass: lists this SIMD group's pixels that need the deferred pass
 // (one atomic per group; the dispatch grows to cover the list). Whole quads
 // (a need the same in all four lanes) stay four consecutive entries from a
 // multiple of four, so a listed quad is a subgroup quad again there.
-void list_for_disk(uvec2 px, bool need) {
+void list_deferred(uvec2 px, bool need) {
     uvec4 ballot = subgroupBallot(need);
     uint n = subgroupBallotBitCount(ballot);
     uint base = 0u;
     if (subgroupElect() && n > 0u) {
-        base = atomicAdd(disk_list.count, n);
+        base = atomicAdd(deferred_list.count, n);
         // Both sides grow with the count, so the largest count wins both.
         uint groups = (base + n + 63u) / 64u;
-        atomicMax(disk_dispatch.groups_x, min(groups, DISK_ROW));
-        atomicMax(disk_dispatch.groups_y, (groups + DISK_ROW - 1u) / DISK_ROW);
+        atomicMax(deferred_dispatch.groups_x, min(groups, DEFERRED_ROW));
+        atomicMax(deferred_dispatch.groups_y, (groups + DEFERRED_ROW - 1u) / DEFERRED_ROW);
     }
     base = subgroupBroadcastFirst(base);
-    if (need) disk_list.px[base + subgroupBallotExclusiveBitCount(ballot)] = px.x | (px.y << 16u);
+    if (need) deferred_list.px[base + subgroupBallotExclusiveBitCount(ballot)] = px.x | (px.y << 16u);
 }
 
 // The disk pass: one listed pixel per invocation. Its path again (the same
@@ -88,9 +90,9 @@ void list_for_disk(uvec2 px, bool need) {
 // trace pass wrote (the sky, or black where the ray is captured); an opaque
 // disk hides it.
 void disk_pass() {
-    uint i = (gl_WorkGroupID.y * DISK_ROW + gl_WorkGroupID.x) * 64u + gl_LocalInvocationIndex;
-    if (i >= disk_list.count) return;
-    uint packed = disk_list.px[i];
+    uint i = (gl_WorkGroupID.y * DEFERRED_ROW + gl_WorkGroupID.x) * 64u + gl_LocalInvocationIndex;
+    if (i >= deferred_list.count) return;
+    uint packed = deferred_list.px[i];
     ivec2 px = ivec2(packed & 0xffffu, packed >> 16u);
     PixelRay ray = camera_ray(uvec2(px));
     Hit hit = metric_trace(ray.origin, ray.dir);
@@ -99,10 +101,51 @@ void disk_pass() {
 }
 #endif
 
+#ifdef GEODESIC_AOV
+// The geodesic AOV's record of the path (its outcome in alpha).
+vec4 path_record(Hit hit) {
+    vec4 aov = vec4(0.0, 0.0, 0.0, float(hit.outcome));
+    if (hit.outcome == OUT_ESCAPED) {
+        aov.xyz = hit.dir;
+    } else if (hit.outcome == OUT_DISK) {
+        vec3 d = hit.pos - P.metric.holes[0].xyz;
+        aov.x = metric_disk_radius(hit.pos);
+        aov.y = atan(dot(d, P.disk.e2), dot(d, P.disk.e1));
+        aov.z = hit.g;
+    }
+    return aov;
+}
+#endif
+
+#ifndef GEODESIC_AOV
+// The colour the path brings back: the sky (and the grid plane) where it
+// escaped, the disk where it stopped at it, under what it gathered on the
+// way (glow, transmittance).
+vec3 path_color(Hit hit, Footprint fp, float pixel_angle) {
+    vec3 color = vec3(0.0);
+    if (hit.outcome == OUT_ESCAPED) {
+        color = sky_color(hit.dir, fp);
+        grid_plane(hit.pos, hit.dir, pixel_angle, color);
+    }
+    else if (!METRIC_SHADES_DISK && hit.outcome == OUT_DISK) {
+        // The disk where the path stopped at it (several holes, gravity
+        // off): opaque. (The closed-form path adds the disk's light as it
+        // goes.)
+        float r = metric_disk_radius(hit.pos);
+        // (Seen as it was when its light left: the spinning hole's path
+        // sets the delay; the others here have none.)
+        float t = P.disk.rotation_time - (LIGHT_DELAY ? P.disk.speed * hit.delay : 0.0);
+        float dens = THIN_STRUCTURE ? thin_disk_density(r, disk_azimuth(hit.pos), t) : 1.0;
+        color = dens * disk_color(r, hit.g);
+    }
+    return hit.glow + hit.trans * color;
+}
+#endif
+
 void main() {
     read_params();  // first, outside any branch (params.glsl)
-#ifdef DISK_SPLIT
-    if (!METRIC_SPLITS_RARE && DISK_STAGE == DISK_STAGE_DISK) {
+#ifdef SPLIT_PASSES
+    if (!METRIC_SPLITS_RARE && SPLIT_STAGE == STAGE_DEFERRED) {
         disk_pass();
         return;
     }
@@ -119,14 +162,14 @@ void main() {
     uvec2 in_quad = uvec2(li & 1u, (li >> 1u) & 1u);
     uvec2 px_raw = gl_WorkGroupID.xy * 8u + 2u * uvec2(quad & 3u, quad >> 2u) + in_quad;
     bool listed = true;
-#ifdef DISK_SPLIT
-    if (METRIC_SPLITS_RARE && DISK_STAGE == DISK_STAGE_DISK) {
+#ifdef SPLIT_PASSES
+    if (METRIC_SPLITS_RARE && SPLIT_STAGE == STAGE_DEFERRED) {
         // The second pass of a split by paths: the listed quads, four
         // consecutive invocations each (lanes past the list's end trace a
         // pixel and store nothing).
-        uint i = (gl_WorkGroupID.y * DISK_ROW + gl_WorkGroupID.x) * 64u + li;
-        listed = i < disk_list.count;
-        uint packed = disk_list.px[min(i, disk_list.count - 1u)];
+        uint i = (gl_WorkGroupID.y * DEFERRED_ROW + gl_WorkGroupID.x) * 64u + li;
+        listed = i < deferred_list.count;
+        uint packed = deferred_list.px[min(i, deferred_list.count - 1u)];
         px_raw = uvec2(packed & 0xffffu, packed >> 16u);
     }
 #endif
@@ -149,22 +192,14 @@ void main() {
     if (ray.valid) hit = metric_trace(ray.origin, ray.dir);
     hit.g *= observer_g;
 #ifdef GEODESIC_AOV
-    vec4 aov = vec4(0.0, 0.0, 0.0, float(hit.outcome));
-    if (hit.outcome == OUT_ESCAPED) {
-        aov.xyz = hit.dir;
-    } else if (hit.outcome == OUT_DISK) {
-        vec3 d = hit.pos - P.metric.holes[0].xyz;
-        aov.x = metric_disk_radius(hit.pos);
-        aov.y = atan(dot(d, P.disk.e2), dot(d, P.disk.e1));
-        aov.z = hit.g;
-    }
-    imageStore(out_img, ivec2(px), aov);
+    imageStore(out_img, ivec2(px), path_record(hit));
 #else
-    vec3 color = vec3(0.0);
     float pixel_angle = ray.angle;
     // The pixel's footprint on the sky: the change of the final direction
     // from one pixel to the next, across and down. Unlensed, pixel_angle in
-    // two directions at right angles to it.
+    // two directions at right angles to it. (Here, not in a function of its
+    // own: with these quad operations in a called function, the split's
+    // trace pass listed almost no pixels on lavapipe, Mesa 22.3.)
     vec3 t1 = normalize(cross(hit.dir, abs(hit.dir.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
     Footprint fp = Footprint(pixel_angle * t1, pixel_angle * cross(hit.dir, t1), pixel_angle);
 #ifdef RAY_DIFFERENTIALS
@@ -194,23 +229,8 @@ void main() {
         fp.y = oky ? ay : across;
     }
 #endif
-    if (hit.outcome == OUT_ESCAPED) {
-        color = sky_color(hit.dir, fp);
-        grid_plane(hit.pos, hit.dir, pixel_angle, color);
-    }
-    else if (!METRIC_SHADES_DISK && hit.outcome == OUT_DISK) {
-        // The disk where the path stopped at it (several holes, gravity
-        // off): opaque. (The closed-form path adds the disk's light as it
-        // goes.)
-        float r = metric_disk_radius(hit.pos);
-        // (Seen as it was when its light left: the spinning hole's path
-        // sets the delay; the others here have none.)
-        float t = P.disk.rotation_time - (LIGHT_DELAY ? P.disk.speed * hit.delay : 0.0);
-        float dens = THIN_STRUCTURE ? thin_disk_density(r, disk_azimuth(hit.pos), t) : 1.0;
-        color = dens * disk_color(r, hit.g);
-    }
-    color = hit.glow + hit.trans * color;
-#ifdef DISK_SPLIT
+    vec3 color = path_color(hit, fp, pixel_angle);
+#ifdef SPLIT_PASSES
     if (METRIC_SPLITS_RARE) {
         // The whole quad if any of its lanes was deferred and one lies in
         // the image (its lanes past the edge listed too, storing nothing).
@@ -219,9 +239,9 @@ void main() {
         q = q || subgroupQuadSwapVertical(q);
         bool any_inside = inside || subgroupQuadSwapHorizontal(inside);
         any_inside = any_inside || subgroupQuadSwapVertical(any_inside);
-        if (DISK_STAGE == DISK_STAGE_TRACE) list_for_disk(px_raw, q && any_inside);
-    } else if (DISK_STAGE == DISK_STAGE_TRACE) {
-        list_for_disk(px, hit.deferred && inside && ray.valid);
+        if (SPLIT_STAGE == STAGE_TRACE) list_deferred(px_raw, q && any_inside);
+    } else if (SPLIT_STAGE == STAGE_TRACE) {
+        list_deferred(px, hit.deferred && inside && ray.valid);
     }
 #endif
 #ifdef RAY_DIFFERENTIALS

@@ -16,7 +16,9 @@
 pub mod app;
 pub mod camera;
 pub mod cli;
+pub mod deferred;
 pub mod error;
+pub mod features;
 pub mod frame;
 pub mod graph;
 pub mod input;

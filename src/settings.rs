@@ -11,6 +11,7 @@ use std::sync::OnceLock;
 use std::time::Duration;
 
 use crate::vk::fault::{self, Fault};
+use crate::vk::{DEFAULT_GPU_TIMEOUT_S, GpuSettings, Validation};
 use crate::{Error, Result};
 
 /// What the environment asks for.
@@ -33,10 +34,6 @@ pub struct Settings {
     /// `BLACKHOLE_FAULT`: a failure injected for the tests.
     pub fault: Option<Fault>,
 }
-
-/// The wait limit without `BLACKHOLE_GPU_TIMEOUT_S`: a 4K volumetric frame on
-/// a CPU driver takes seconds, not minutes.
-pub const DEFAULT_GPU_TIMEOUT_S: f64 = 600.0;
 
 impl Default for Settings {
     fn default() -> Self {
@@ -136,6 +133,26 @@ impl Settings {
             }
         }
         Ok((s, unknown))
+    }
+
+    /// The validation layer's mode: `BLACKHOLE_VALIDATION=1` requires it,
+    /// `=0` turns it off; otherwise debug builds enable it when present.
+    pub fn validation_mode(&self) -> Validation {
+        match self.validation {
+            Some(true) => Validation::Required,
+            Some(false) => Validation::Off,
+            None if cfg!(debug_assertions) => Validation::IfPresent,
+            None => Validation::Off,
+        }
+    }
+
+    /// What the device is handed (vk/ reads no environment).
+    pub fn gpu(&self) -> GpuSettings {
+        GpuSettings {
+            device: self.device.clone(),
+            gpu_timeout: self.gpu_timeout,
+            fault: self.fault.clone(),
+        }
     }
 
     /// Parses the process's environment.

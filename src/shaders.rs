@@ -12,7 +12,7 @@ pub enum RaymarchBuild {
     NoQuad,
     /// The geodesic AOV (`GEODESIC_AOV`).
     Aov,
-    /// The split stages (`DISK_SPLIT`: the trace pass that lists pixels and
+    /// The split stages (`SPLIT_PASSES`: the trace pass that lists pixels and
     /// the indirect pass over them): the thin disk around a non-rotating
     /// hole, the rarer paths around a spinning one.
     Split,

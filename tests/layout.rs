@@ -363,19 +363,19 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
     // the rows of its indirect dispatch.
     let variant = include_str!("../shaders/include/variant.glsl");
     for (name, rust) in [
-        ("DISK_STAGE_ALL", r::DISK_STAGE_ALL),
-        ("DISK_STAGE_TRACE", r::DISK_STAGE_TRACE),
-        ("DISK_STAGE_DISK", r::DISK_STAGE_DISK),
+        ("STAGE_ALL", r::STAGE_ALL),
+        ("STAGE_TRACE", r::STAGE_TRACE),
+        ("STAGE_DEFERRED", r::STAGE_DEFERRED),
     ] {
         assert_eq!(define(variant, name), f64::from(rust), "{name}");
     }
     let raymarch = include_str!("../shaders/raymarch.comp");
     let row = defines(raymarch)
         .into_iter()
-        .find(|(n, _)| n == "DISK_ROW")
+        .find(|(n, _)| n == "DEFERRED_ROW")
         .map(|(_, v)| v)
-        .expect("#define DISK_ROW missing");
-    assert_eq!(row, format!("{}u", r::DISK_ROW), "DISK_ROW");
+        .expect("#define DEFERRED_ROW missing");
+    assert_eq!(row, format!("{}u", r::DEFERRED_ROW), "DEFERRED_ROW");
 }
 
 /// `layout(constant_id = N) const TYPE NAME` lines of a GLSL source, as

@@ -3,7 +3,7 @@
 
 mod common;
 
-use blackhole::passes::raymarch::glsl::DISK_ROW;
+use blackhole::passes::raymarch::glsl::DEFERRED_ROW;
 use common::{
     SceneSrc, assert_clean, blackhole, path_in, render_command, render_png, run, scratch,
 };
@@ -616,7 +616,7 @@ fn split_and_single(
 /// pass keeps a path it cannot carry.
 #[test]
 fn the_spinning_holes_split_draws_what_the_single_dispatch_draws() {
-    if !common::renderer().features().disk_split {
+    if !common::renderer().features().split {
         common::skipped(
             "the_spinning_holes_split_draws_what_the_single_dispatch_draws",
             "this device does not split the ray march (only a CPU device with subgroup quads \
@@ -673,7 +673,7 @@ fn the_spinning_holes_split_draws_what_the_single_dispatch_draws() {
 /// dispatch), shades one twice, or composes the disk over the wrong light.
 #[test]
 fn the_split_disk_pass_draws_what_the_single_dispatch_draws() {
-    if !common::renderer().features().disk_split {
+    if !common::renderer().features().split {
         common::skipped(
             "the_split_disk_pass_draws_what_the_single_dispatch_draws",
             "this device does not split the ray march (only a CPU device with subgroup quads \
@@ -693,7 +693,7 @@ fn the_split_disk_pass_draws_what_the_single_dispatch_draws() {
         ),
     ];
     // The larger size lists more pixels than one row of the disk pass's
-    // indirect dispatch holds (DISK_ROW workgroups of 64).
+    // indirect dispatch holds (DEFERRED_ROW workgroups of 64).
     for ((name, toml), (w, h)) in scenes.into_iter().zip([(640u32, 360u32), (160, 90)]) {
         let [split, single] = &split_and_single(&dir, name, toml, (w, h), "raymarch disk");
         let lit = single.pixels().filter(|p| p[0] > 0.0).count();
@@ -703,7 +703,7 @@ fn the_split_disk_pass_draws_what_the_single_dispatch_draws() {
         );
         if w > 160 {
             assert!(
-                lit > 2 * DISK_ROW as usize * 64,
+                lit > 2 * DEFERRED_ROW as usize * 64,
                 "{name}: more than one row of the dispatch ({lit} pixels)"
             );
         }

@@ -23,11 +23,12 @@ layout(constant_id = 5) const int THIN_CROSSINGS = 1;
 // The volumetric disk glows as a blackbody at its shifted temperature (else
 // the film's colour map).
 layout(constant_id = 6) const bool VOLUME_BLACKBODY = false;
-// Which part of the split thin-disk ray march this pipeline runs.
-#define DISK_STAGE_ALL 0    // everything in one dispatch
-#define DISK_STAGE_TRACE 1  // sky and captures, every pixel; lists disk pixels
-#define DISK_STAGE_DISK 2   // the thin disk over the listed pixels
-layout(constant_id = 7) const int DISK_STAGE = DISK_STAGE_ALL;
+// Which part of the split ray march this pipeline runs (src/deferred.rs: a
+// second pass deferred to the rare, expensive paths).
+#define STAGE_ALL 0       // everything in one dispatch
+#define STAGE_TRACE 1     // every pixel's common path; lists the rest
+#define STAGE_DEFERRED 2  // the listed pixels (the thin disk; the rare paths)
+layout(constant_id = 7) const int SPLIT_STAGE = STAGE_ALL;
 // The observer moves through the static frame (orbiting, falling): the
 // pixel directions are aberrated.
 layout(constant_id = 8) const bool OBSERVER_MOVES = false;

@@ -16,13 +16,14 @@ pub const MIN_DISTANCE_RS: f64 = 1.6;
 /// 1.6/1.5 of the outer photon orbit (Boyer-Lindquist r, as a distance
 /// sqrt(r^2 + a^2)); inside allowed, 1.01 of the horizon's.
 pub fn min_distance_rs(spin: f64, allow_inside: bool) -> f64 {
-    use crate::physics::kerr;
+    use crate::spacetime::radii;
     let a = spin.abs().min(0.9999);
-    let dist = |r_m: f64| 0.5 * (r_m * r_m + a * a).sqrt();
+    // Boyer-Lindquist r (rs) as a distance: sqrt(r^2 + (a* rs / 2)^2).
+    let dist = |r: f64| (r * r + 0.25 * a * a).sqrt();
     if allow_inside {
-        1.01 * dist(kerr::frame::r_horizon(a))
+        1.01 * dist(radii::horizon(1.0, a))
     } else {
-        MIN_DISTANCE_RS / 1.5 * dist(kerr::r_photon_equatorial(a, false))
+        MIN_DISTANCE_RS / 1.5 * dist(radii::photon_orbit(1.0, a, false))
     }
 }
 

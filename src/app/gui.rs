@@ -14,10 +14,10 @@ use egui::{Color32, DragValue, Ui};
 
 use crate::frame::FrameTimings;
 use crate::graph::{Graph, ImageHandle, Mips};
-use crate::physics::kerr;
 use crate::physics::observer::ObserverKind;
 use crate::render::Overlay;
 use crate::scene::{DiskKind, PRESETS, Scene, SkyKind, Tonemap, VolumeColor};
+use crate::spacetime::radii;
 use crate::stars::SkyFrame;
 use crate::vk::{Access, Gpu};
 use crate::{Error, Result};
@@ -466,15 +466,14 @@ fn camera_and_holes(ui: &mut Ui, s: &mut Scene) {
                 follow_isco(inner, h.rs, before, h.spin);
             }
             if h.spin != 0.0 {
-                let a = h.spin.abs();
-                let half = |r: f64| 0.5 * h.rs * r;
+                let (rs, a) = (h.rs, h.spin);
                 ui.label(format!(
                     "horizon {:.3} rs; circular photon orbits {:.3} rs (prograde), {:.3} rs \
                      (retrograde); ISCO {:.3} rs (the disk's turning direction)",
-                    half(kerr::frame::r_horizon(a)),
-                    half(kerr::r_photon_equatorial(a, true)),
-                    half(kerr::r_photon_equatorial(a, false)),
-                    half(kerr::r_isco(h.spin)),
+                    radii::horizon(rs, a),
+                    radii::photon_orbit(rs, a, true),
+                    radii::photon_orbit(rs, a, false),
+                    radii::isco(rs, a),
                 ));
                 ui.label(
                     "spinning (Kerr): light paths exact, in closed form (Mino time; 32-bit, \
@@ -501,7 +500,7 @@ fn camera_and_holes(ui: &mut Ui, s: &mut Scene) {
 /// ISCO of spin `after` (the slider moves the edge with it); any other
 /// inner radius is left as the user set it.
 pub fn follow_isco(inner: &mut f64, rs: f64, before: f64, after: f64) {
-    let isco = |a: f64| 0.5 * rs * kerr::r_isco(a);
+    let isco = |a: f64| radii::isco(rs, a);
     if before != after && (*inner - isco(before)).abs() <= 1e-9 * inner.abs() {
         *inner = isco(after);
     }

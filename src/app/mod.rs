@@ -22,7 +22,7 @@ use winit::window::{Window, WindowId};
 use crate::frame::{Frame, FrameTimings, OutputKind};
 use crate::render::{FRAMES_IN_FLIGHT, Renderer, SwapchainTarget, ViewOptions};
 use crate::scene::Scene;
-use crate::vk::{Gpu, Instance, PresentMode, Swapchain, Validation};
+use crate::vk::{Gpu, Instance, PresentMode, Swapchain};
 use crate::{Error, Result};
 use camera::Orbit;
 use gui::{Gui, Stats};
@@ -150,7 +150,8 @@ impl App {
                 result,
             })?
             .to_vec();
-        let instance = Instance::with_extensions(Validation::from_env(), &exts)?;
+        let settings = crate::settings::get();
+        let instance = Instance::with_extensions(settings.validation_mode(), &exts)?;
         // SAFETY: the handles come from a live window that outlives the surface
         // (the swapchain, which owns the surface, drops before the window).
         let surface = unsafe {
@@ -166,7 +167,7 @@ impl App {
             unsafe { surface_fn.get_physical_device_surface_support(pd, family, surface) }
                 .unwrap_or(false)
         };
-        let gpu = Gpu::open(instance, Some(&check))?;
+        let gpu = Gpu::open(instance, Some(&check), settings.gpu())?;
         let size = window.inner_size();
         let swapchain = Swapchain::new(
             &gpu,

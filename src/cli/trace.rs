@@ -5,7 +5,7 @@
 //! spinning hole the fan is split: rays passing on the side that turns with
 //! the hole (prograde) and against it (retrograde), each around its own
 //! critical impact parameter, drawn in closed form (Mino time,
-//! `physics::kerr`) in Boyer-Lindquist r and phi, with both circular photon
+//! `spacetime::kerr::equatorial_path`) in Boyer-Lindquist r and phi, with both circular photon
 //! orbits and both ISCOs.
 
 use std::path::Path;
@@ -14,8 +14,9 @@ use glam::DVec3;
 use plotters::prelude::*;
 
 use crate::physics::geodesic::{Hole, Outcome, TraceOptions, trace};
-use crate::physics::kerr::{self, radial::Radial};
 use crate::scene::Scene;
+use crate::spacetime::kerr as kerr_path;
+use crate::spacetime::radii;
 use crate::{Error, Result};
 
 /// `blackhole trace`: writes the SVG for the scene (or preset) named.
@@ -130,36 +131,17 @@ pub fn kerr_photon_paths(a: f64, extent: f64) -> Vec<PhotonPath> {
     let start = 2.0 * 4.0 * extent; // in M = rs / 2
     let mut out = Vec::new();
     for prograde in [true, false] {
-        let lambda_c =
-            kerr::critical_lambda_eta(kerr::r_photon_equatorial(a.abs(), prograde), a.abs()).0
-                * a.signum();
+        let lambda_c = radii::critical_lambda(a, prograde);
         for k in KERR_FAN {
             let lambda = k * lambda_c;
             let y0 = -lambda;
             let (r_o, phi_o) = ((start * start + y0 * y0).sqrt(), y0.atan2(-start));
-            let rad = Radial::new(a, lambda, 0.0, r_o, -1.0);
-            // Stopped just outside the horizon, where Boyer-Lindquist phi
-            // winds without end; a point only every 0.02 rs (the plot's
-            // resolution).
-            let mut points: Vec<(f64, f64)> = Vec::new();
-            for i in 0..=KERR_SAMPLES {
-                let tau = rad.tau_end * f64::from(i) / f64::from(KERR_SAMPLES) * (1.0 - 1e-9);
-                let r = rad.r_at(tau);
-                if !r.is_finite() || r < 1.01 * rad.r_plus {
-                    break;
-                }
-                let phi = phi_o + rad.i_phi(tau) + lambda * tau;
-                let p = (0.5 * r * phi.cos(), 0.5 * r * phi.sin());
-                let far = points
-                    .last()
-                    .is_none_or(|q: &(f64, f64)| (p.0 - q.0).hypot(p.1 - q.1) > 0.02);
-                if far && p.0.is_finite() && p.1.is_finite() {
-                    points.push(p);
-                }
-            }
+            // A point only every 0.02 rs (the plot's resolution).
+            let (points, captured) =
+                kerr_path::equatorial_path(a, lambda, (r_o, phi_o), KERR_SAMPLES, 0.02);
             out.push(PhotonPath {
                 b: 0.5 * lambda.abs(),
-                captured: rad.captured,
+                captured,
                 pieces: clip_polyline(&points, extent),
             });
         }
@@ -228,13 +210,12 @@ fn plot_of(scene: &Scene, extent: f64) -> Plot {
     }
     let a = spin.abs();
     let purple = RGBColor(140, 60, 170);
-    let half = |r: f64| 0.5 * r;
     let (pro, retro) = (
-        half(kerr::r_photon_equatorial(a, true)),
-        half(kerr::r_photon_equatorial(a, false)),
+        radii::photon_orbit(1.0, a, true),
+        radii::photon_orbit(1.0, a, false),
     );
-    let (isco_pro, isco_retro) = (half(kerr::r_isco(a)), half(kerr::r_isco(-a)));
-    let horizon = half(kerr::frame::r_horizon(spin));
+    let (isco_pro, isco_retro) = (radii::isco(1.0, a), radii::isco(1.0, -a));
+    let horizon = radii::horizon(1.0, spin);
     Plot {
         caption: format!(
             "Equatorial photon paths around a hole spinning at a* = {spin} (Boyer-Lindquist r, phi; rs)"

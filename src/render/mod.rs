@@ -2,9 +2,9 @@
 //! frames and the frame slots; builds each frame with the one recipe
 //! ([`recipe::add_frame`]) and runs it, offscreen (read back to the host:
 //! `offscreen.rs`, one readback path) or onto a swapchain image (the window:
-//! `window.rs`). What it does on the device is decided in `features.rs`.
+//! `window.rs`). What it does on the device is decided in
+//! [`crate::features`].
 
-pub mod features;
 pub mod noise;
 mod offscreen;
 pub mod pipelines;
@@ -18,7 +18,7 @@ use std::sync::Arc;
 use ash::vk;
 
 pub use crate::camera::halton;
-pub use features::Features;
+pub use crate::features::{Features, RendererOptions};
 pub use pipelines::Pipelines;
 pub use recipe::{Accumulation, HdrSource, PostSettings, add_frame};
 pub use slots::{FRAMES_IN_FLIGHT, FrameSlot};
@@ -28,37 +28,10 @@ use crate::frame::OutputKind;
 use crate::graph::{Graph, ImageHandle};
 use crate::passes::{self, raymarch};
 use crate::scene::Scene;
-use crate::vk::{Access, BufferBinding, Gpu, Image, ImageBinding, ImageDesc, Validation};
+use crate::spacetime::Spacetime;
+use crate::vk::{Access, BufferBinding, Gpu, Image, ImageBinding, ImageDesc};
 use crate::{Error, Result};
 use resources::SceneResources;
-
-/// Options for creating a [`Renderer`]; the defaults come from the
-/// environment ([`crate::settings`]).
-#[derive(Clone, Copy, Debug)]
-pub struct RendererOptions {
-    pub validation: Validation,
-    /// Use ray differentials where the device can (`BLACKHOLE_NO_QUAD=1`
-    /// turns them off, for comparisons).
-    pub ray_differentials: bool,
-    /// Split the thin disk's ray march where the device and the frame
-    /// gain by it (`BLACKHOLE_NO_SPLIT=1` keeps the one dispatch).
-    pub disk_split: bool,
-    /// Compute a spinning hole's per-ray constants in 64-bit floats where
-    /// the device has them (`BLACKHOLE_NO_F64=1` takes the 32-bit build).
-    pub float64: bool,
-}
-
-impl Default for RendererOptions {
-    fn default() -> Self {
-        let settings = crate::settings::get();
-        RendererOptions {
-            validation: Validation::from_env(),
-            ray_differentials: !settings.no_quad,
-            disk_split: !settings.no_split,
-            float64: !settings.no_f64,
-        }
-    }
-}
 
 /// The renderer. Fields drop in declaration order: frame slots and per-view
 /// images, then the shared resources and pipelines, then (through the last
@@ -81,7 +54,7 @@ impl Renderer {
     /// Opens the device and builds the pipelines.
     pub fn new(options: RendererOptions) -> Result<Self> {
         crate::settings::init()?;
-        let gpu = Gpu::new(options.validation)?;
+        let gpu = Gpu::new(options.validation, crate::settings::get().gpu())?;
         Self::with_gpu(gpu, options)
     }
 
@@ -126,6 +99,19 @@ impl Renderer {
     /// ray march); tests expect their pass lists and images from it.
     pub fn features(&self) -> Features {
         self.pipelines.features()
+    }
+
+    /// The ray march's passes in a frame of `scene` at `width` x `height`
+    /// on this device, in order: split into the deferred list's clear, the
+    /// trace pass and the deferred pass where the device and the frame gain
+    /// by it ([`crate::deferred`]), one dispatch otherwise.
+    pub fn ray_march_passes(&self, scene: &Scene, width: u32, height: u32) -> Vec<&'static str> {
+        let spacetime = Spacetime::of(scene);
+        let variant = raymarch::Variant::of(scene, &spacetime, false);
+        raymarch::pass_names(
+            variant,
+            self.features().splits(scene, &spacetime, width, height),
+        )
     }
 
     /// The device.
@@ -208,7 +194,7 @@ impl Renderer {
         // The ray march specialised for this scene, built now rather than
         // while a frame records (a new variant takes lavapipe a moment):
         // split and whole, as a moving camera may need either.
-        let variant = raymarch::Variant::of(scene, false);
+        let variant = raymarch::Variant::of(scene, &Spacetime::of(scene), false);
         for split in [true, false] {
             for stage in self.pipelines.raymarch.stages(variant, split) {
                 self.pipelines.raymarch.pipeline(stage)?;
@@ -221,7 +207,7 @@ impl Renderer {
     fn write_params(
         &mut self,
         slot: usize,
-        scene: &Scene,
+        (scene, spacetime): (&Scene, &Spacetime),
         size: (u32, u32),
         jitter: (f32, f32),
     ) -> Result<()> {
@@ -231,7 +217,7 @@ impl Renderer {
             jitter,
             image_sky_width: self.resources.sky.as_ref().map(|(_, sky)| sky.desc.width),
         };
-        let params = raymarch::RaymarchParams::new(scene, &frame);
+        let params = raymarch::RaymarchParams::new(scene, spacetime, &frame);
         self.slots[slot]
             .params
             .mapped_mut()?
@@ -285,7 +271,7 @@ fn add_scene_frame<'a>(
     g: &mut Graph<'a>,
     pipelines: &'a Pipelines,
     resources: &SceneResources,
-    scene: &Scene,
+    (scene, spacetime): (&Scene, &Spacetime),
     params: BufferBinding,
     size: (u32, u32),
     output: OutputKind,
@@ -298,6 +284,7 @@ fn add_scene_frame<'a>(
         pipelines,
         HdrSource::RayMarch {
             scene,
+            spacetime,
             params: &params,
             images: &images,
             size,

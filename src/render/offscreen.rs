@@ -17,6 +17,7 @@ use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
 use crate::graph::{Graph, ImageHandle};
 use crate::passes::copy;
 use crate::scene::{DiskKind, Scene};
+use crate::spacetime::Spacetime;
 use crate::vk::{Access, Buffer, BufferBinding, ImageBinding, ImageDesc};
 use crate::{Error, Result};
 
@@ -39,7 +40,13 @@ impl Renderer {
         self.prepare_scene(scene)?;
         self.slots[OFFSCREEN_SLOT].wait()?;
         let build = std::time::Instant::now();
-        self.write_params(OFFSCREEN_SLOT, scene, (width, height), (0.0, 0.0))?;
+        let spacetime = Spacetime::of(scene);
+        self.write_params(
+            OFFSCREEN_SLOT,
+            (scene, &spacetime),
+            (width, height),
+            (0.0, 0.0),
+        )?;
         self.offscreen(
             (width, height),
             kind,
@@ -49,7 +56,7 @@ impl Renderer {
                     g,
                     pipelines,
                     resources,
-                    scene,
+                    (scene, &spacetime),
                     params,
                     (width, height),
                     kind,
@@ -121,7 +128,8 @@ impl Renderer {
                 (halton(i + 1, 2) - 0.5) as f32,
                 (halton(i + 1, 3) - 0.5) as f32,
             );
-            self.write_params(OFFSCREEN_SLOT, scene, (width, height), jitter)?;
+            let spacetime = Spacetime::of(scene);
+            self.write_params(OFFSCREEN_SLOT, (scene, &spacetime), (width, height), jitter)?;
             let mean = self
                 .mean
                 .as_ref()
@@ -135,6 +143,7 @@ impl Renderer {
                 let params = self.slots[OFFSCREEN_SLOT].params.binding();
                 let sample = Sample {
                     scene,
+                    spacetime: &spacetime,
                     size: (width, height),
                     mean: mean.clone(),
                     index: i,
@@ -159,6 +168,7 @@ impl Renderer {
                 |g, pipelines, resources, params| {
                     let sample = Sample {
                         scene,
+                        spacetime: &spacetime,
                         size: (width, height),
                         mean,
                         index: i,
@@ -290,6 +300,7 @@ impl Renderer {
 /// running mean.
 struct Sample<'s> {
     scene: &'s Scene,
+    spacetime: &'s Spacetime,
     size: (u32, u32),
     /// The accumulation image: description, binding, current state.
     mean: (ImageDesc, ImageBinding, Access),
@@ -310,7 +321,7 @@ impl Sample<'_> {
             g,
             pipelines,
             resources,
-            self.scene,
+            (self.scene, self.spacetime),
             params,
             self.size,
             output,

@@ -3,8 +3,8 @@
 
 use std::sync::Arc;
 
-use super::Features;
 use crate::Result;
+use crate::features::Features;
 use crate::passes::accumulate::AccumulatePipeline;
 use crate::passes::bloom::BloomPipelines;
 use crate::passes::composite::CompositePipelines;

@@ -10,6 +10,7 @@ use crate::frame::OutputKind;
 use crate::graph::{BufferHandle, Graph, ImageHandle};
 use crate::passes::{self, composite, raymarch};
 use crate::scene::{Bloom, Post, Scene};
+use crate::spacetime::Spacetime;
 
 /// Where the frame's linear HDR radiance comes from.
 pub enum HdrSource<'h> {
@@ -17,6 +18,8 @@ pub enum HdrSource<'h> {
     /// fraction of it in the window).
     RayMarch {
         scene: &'h Scene,
+        /// The scene's spacetime, built once for the frame.
+        spacetime: &'h Spacetime,
         params: &'h BufferHandle,
         images: &'h raymarch::SceneImages,
         size: (u32, u32),
@@ -56,6 +59,7 @@ pub fn add_frame<'a>(
     let hdr = match source {
         HdrSource::RayMarch {
             scene,
+            spacetime,
             params,
             images,
             size,
@@ -71,8 +75,10 @@ pub fn add_frame<'a>(
                     raymarch::RaymarchOutput::Beauty
                 },
                 size,
-                variant: raymarch::Variant::of(scene, output == OutputKind::Geodesic),
-                split: pipelines.features().splits(scene, size.0, size.1),
+                variant: raymarch::Variant::of(scene, spacetime, output == OutputKind::Geodesic),
+                split: pipelines
+                    .features()
+                    .splits(scene, spacetime, size.0, size.1),
             },
         ),
         HdrSource::Image(image) => image,

@@ -74,7 +74,7 @@ impl FrameSlot {
     pub fn wait(&mut self) -> Result<Option<FrameTimings>> {
         let t = Instant::now();
         if self.pending
-            && let Some(result) = crate::vk::fault::wait_fault()
+            && let Some(result) = crate::vk::fault::wait_fault(self.commands.fault())
         {
             // Injected (tests): fail while the frame is still running.
             let e = Error::Vulkan {
@@ -160,7 +160,7 @@ impl FrameSlot {
         let why = match result {
             vk::Result::TIMEOUT => format!(
                 "the GPU did not finish the frame within {} s (BLACKHOLE_GPU_TIMEOUT_S)",
-                crate::vk::gpu_timeout().as_secs_f64()
+                self.commands.timeout().as_secs_f64()
             ),
             vk::Result::ERROR_DEVICE_LOST => "the GPU device was lost".to_string(),
             vk::Result::ERROR_OUT_OF_DEVICE_MEMORY | vk::Result::ERROR_OUT_OF_HOST_MEMORY => {

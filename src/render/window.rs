@@ -9,6 +9,7 @@ use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
 use crate::graph::{Graph, ImageHandle};
 use crate::passes::{self, copy};
 use crate::scene::Scene;
+use crate::spacetime::Spacetime;
 use crate::vk::{Access, ImageBinding, ImageDesc};
 use crate::{Error, Result};
 
@@ -72,7 +73,13 @@ impl Renderer {
         let slot_index = self.next_slot;
         self.next_slot = (self.next_slot + 1) % self.slots.len();
         self.slots[slot_index].wait()?;
-        self.write_params(slot_index, scene, view.render_size, view.jitter)?;
+        let spacetime = Spacetime::of(scene);
+        self.write_params(
+            slot_index,
+            (scene, &spacetime),
+            view.render_size,
+            view.jitter,
+        )?;
 
         // The running mean follows the render size; a new one starts over.
         let mut sample = view.sample;
@@ -98,7 +105,7 @@ impl Renderer {
             &mut g,
             &self.pipelines,
             &self.resources,
-            scene,
+            (scene, &spacetime),
             self.slots[slot_index].params.binding(),
             (w, h),
             OutputKind::Ldr,

@@ -60,9 +60,12 @@ impl Scene {
             .source
             .as_ref()
             .map_or_else(|| "the scene".to_string(), |p| p.display().to_string());
+        let spacetime = crate::spacetime::Spacetime::of(self);
         for i in range.start..end {
             let camera = self.camera_at_frame(i);
-            if let Err((path, value, why)) = self.check_camera(&camera, &[Key("camera")]) {
+            if let Err((path, value, why)) =
+                self.check_camera_in(&spacetime, &camera, &[Key("camera")])
+            {
                 return Err(Error::Scene(format!(
                     "{origin}: frame {i} (t = {:.4} s) of the animation (camera = \"{}\"): {} = {value}: {why}",
                     a.time_of(i),

@@ -167,7 +167,7 @@ impl Scene {
                 .black_holes
                 .first()
                 .map_or((1.0, 0.0), |h| (h.rs, h.spin));
-            self.disk.inner_radius = 0.5 * rs * crate::physics::kerr::r_isco(spin.clamp(-1.0, 1.0));
+            self.disk.inner_radius = crate::spacetime::radii::isco(rs, spin.clamp(-1.0, 1.0));
         }
     }
 
@@ -296,10 +296,6 @@ impl Scene {
 
     /// The camera's observer (the pixel-to-ray mapping and its redshift).
     pub fn observer(&self) -> crate::physics::observer::Observer {
-        crate::spacetime::Spacetime::of(self).observer(
-            self.camera.observer,
-            DVec3::from(self.camera.position),
-            DVec3::from(self.disk.normal),
-        )
+        crate::spacetime::Spacetime::of(self).camera_observer(self)
     }
 }

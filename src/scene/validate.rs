@@ -6,7 +6,7 @@ use glam::DVec3;
 use super::locate::Seg::{self, Idx, Key};
 use super::locate::display_path;
 use super::{Camera, CameraPath, DiskKind, MAX_HOLES, Projection, Scene, SkyKind, Stereo};
-use crate::physics::observer::ObserverKind;
+use crate::spacetime::{Refusal, Spacetime};
 
 /// A rejected value: its key path, the value as written, and the reason.
 pub type Invalid = (Vec<Seg>, String, String);
@@ -24,9 +24,7 @@ fn fail(path: &[Seg], value: impl std::fmt::Display, why: impl Into<String>) -> 
 /// floats, and squares of lengths must stay far inside their range.
 pub const LIMIT: f64 = 1e9;
 
-/// The closest a `"falling"` camera may come to a horizon, in rs (the fall
-/// animation ends at 1.05 rs).
-pub const FALLING_MIN_R: f64 = 1.01;
+pub use crate::spacetime::FALLING_MIN_R;
 
 /// Finite and at most [`LIMIT`] in size.
 trait InRange {
@@ -154,10 +152,15 @@ impl Scene {
     /// `[[animation.keyframe]]` (`at` is then its key path) or any frame of
     /// an animation ([`Scene::check_frames`]).
     pub(super) fn check_camera(&self, c: &Camera, at: &[Seg]) -> Check {
+        self.check_camera_in(&Spacetime::of(self), c, at)
+    }
+
+    /// [`Scene::check_camera`] in the scene's spacetime, built once by the
+    /// caller (a sequence checks every frame's camera).
+    pub(super) fn check_camera_in(&self, spacetime: &Spacetime, c: &Camera, at: &[Seg]) -> Check {
         // Called for every frame of a sequence: the messages (and their
         // key paths) are built only on failure.
         let key = |k: &'static str| [at, &[Key(k)]].concat();
-        let is_camera = at == [Key("camera")];
         let in_range = |v: &[f64; 3]| v.iter().all(|x| x.in_range());
         if !in_range(&c.position) {
             finite3(&key("position"), &c.position)?;
@@ -168,116 +171,40 @@ impl Scene {
         if !in_range(&c.up) {
             finite3(&[Key("camera"), Key("up")], &c.up)?;
         }
-        match c.projection {
-            Projection::Pinhole if !(c.vfov_deg > 0.0 && c.vfov_deg < 180.0) => {
-                return fail(&key("vfov_deg"), c.vfov_deg, "must be in (0, 180) degrees");
-            }
-            Projection::Fisheye if !(c.vfov_deg > 0.0 && c.vfov_deg <= 360.0) => {
-                return fail(
-                    &key("vfov_deg"),
-                    c.vfov_deg,
-                    "must be in (0, 360] degrees for a fisheye (the field across its circle)",
-                );
-            }
-            _ => {}
-        }
-        let lens = |k: &'static str| [Key("camera"), Key(k)];
-        if c.stereo == Stereo::Ods && c.projection != Projection::Equirect {
-            return fail(
-                &lens("stereo"),
-                "\"ods\"",
-                format!(
-                    "needs camera.projection = \"equirect\" (it is \"{}\")",
-                    c.projection.name()
-                ),
-            );
-        }
-        if !(c.ipd.in_range() && c.ipd >= 0.0) {
-            return fail(&lens("ipd"), c.ipd, "must be a finite distance >= 0 (rs)");
-        }
-        if c.stereo == Stereo::Ods && c.ipd <= 0.0 {
-            return fail(&lens("ipd"), c.ipd, "must be > 0 with stereo = \"ods\"");
-        }
-        let fwd = DVec3::from(c.look_at) - DVec3::from(c.position);
-        if fwd.length() < 1e-9 {
-            let why = format!("must differ from {}", display_path(&key("position")));
-            return fail(&key("look_at"), vec3(&c.look_at), why);
-        }
-        if DVec3::from(c.up).cross(fwd.normalize()).length() < 1e-6 {
-            return if is_camera {
-                fail(
-                    &key("up"),
-                    vec3(&c.up),
-                    "must not be zero or parallel to the view direction",
-                )
-            } else {
-                let why = format!(
-                    "makes the view direction parallel to camera.up = {}",
-                    vec3(&c.up)
-                );
-                fail(&key("look_at"), vec3(&c.look_at), why)
-            };
-        }
+        check_lens(c, at)?;
+        check_view(c, at)?;
+        // Inside a horizon first, then the eyes, then the observer's own
+        // rules.
         let cam = DVec3::from(c.position);
-        let mut nearest: Option<(DVec3, f64, f64)> = None;
+        let placed = spacetime.placement(c.observer, cam, DVec3::from(self.disk.normal));
+        if let Err(Refusal::InsideHorizon { hole }) = placed {
+            let why = format!("is inside the horizon of black_hole[{hole}]");
+            return fail(&key("position"), vec3(&c.position), why);
+        }
+        self.check_eyes(c, cam)?;
+        match placed {
+            Ok(()) => Ok(()),
+            Err(refusal) => refuse(c, at, refusal),
+        }
+    }
+
+    /// Each ODS eye sits ipd / 2 from the camera: both outside every hole,
+    /// with room to spare (an eye at the horizon sees nothing).
+    fn check_eyes(&self, c: &Camera, cam: DVec3) -> Check {
+        if c.stereo != Stereo::Ods || !self.physics.gravity {
+            return Ok(());
+        }
         for (i, h) in self.black_holes.iter().enumerate() {
-            let rel = cam - DVec3::from(h.position);
-            let r = rel.length();
-            // A spinning hole's horizon is smaller (checked with its observer).
-            let spins = h.spin != 0.0 && self.physics.gravity;
-            if r <= h.rs && !spins {
-                let why = format!("is inside the horizon of black_hole[{i}]");
-                return fail(&key("position"), vec3(&c.position), why);
-            }
-            // Each ODS eye sits ipd / 2 from the camera: both outside the
-            // hole, with room to spare (an eye at the horizon sees nothing).
-            if c.stereo == Stereo::Ods && self.physics.gravity && r - 0.5 * c.ipd <= 1.01 * h.rs {
+            let r = (cam - DVec3::from(h.position)).length();
+            if r - 0.5 * c.ipd <= 1.01 * h.rs {
                 let why = format!(
                     "puts an eye within 1.01 rs of black_hole[{i}] (the camera is {r:.4} from it; \
                      each eye sits ipd / 2 from the camera)"
                 );
-                return fail(&lens("ipd"), c.ipd, why);
-            }
-            if nearest.is_none_or(|(_, best, _)| r < best) {
-                nearest = Some((rel, r, h.rs));
+                return fail(&[Key("camera"), Key("ipd")], c.ipd, why);
             }
         }
-        let Some((rel, r, rs)) = nearest else {
-            return Ok(());
-        };
-        if let crate::spacetime::Spacetime::Kerr(k) = crate::spacetime::Spacetime::of(self) {
-            return check_spinning_observer(&k, c, &key("observer"), cam);
-        }
-        match c.observer {
-            ObserverKind::Orbiting => {
-                if r <= 1.5 * rs {
-                    let why = format!(
-                        "is inside the photon sphere (r = {r:.4} <= 1.5 rs = {}), where no \
-                         \"orbiting\" observer can be",
-                        1.5 * rs
-                    );
-                    return fail(&key("position"), vec3(&c.position), why);
-                }
-                let axis = DVec3::from(self.disk.normal).normalize_or_zero();
-                if axis != DVec3::ZERO && axis.cross(rel / r).length() <= 1e-6 {
-                    return fail(
-                        &key("position"),
-                        vec3(&c.position),
-                        "is on the disk's axis, where an \"orbiting\" observer's orbit has no direction",
-                    );
-                }
-                Ok(())
-            }
-            ObserverKind::Falling if self.physics.gravity && r < FALLING_MIN_R * rs => {
-                let why = format!(
-                    "is {:.3e} rs from the horizon; a \"falling\" observer must stay at r >= {FALLING_MIN_R} rs \
-                     (closer, its speed is within 32-bit rounding of light's)",
-                    r / rs - 1.0
-                );
-                fail(&key("position"), vec3(&c.position), why)
-            }
-            _ => Ok(()),
-        }
+        Ok(())
     }
 
     fn validate_disk(&self) -> Check {
@@ -493,51 +420,124 @@ impl Scene {
 /// The largest |a*| a scene may set.
 pub const MAX_SPIN: f64 = 0.9999;
 
-/// Where the observers of a spinning hole may stand (the ZAMO anywhere
-/// outside the horizon; a static one outside the ergoregion; an orbiting
-/// one slower than light), and "flat" not at all.
-fn check_spinning_observer(
-    k: &crate::spacetime::SpinningHole,
-    c: &Camera,
-    at: &[Seg],
-    position: DVec3,
-) -> Check {
-    use crate::physics::kerr::PlacementError;
-    let name = format!("\"{}\"", c.observer.name());
-    if c.observer == ObserverKind::Flat {
+/// The projection's own rules: its field of view, the stereo layout and the
+/// eyes' distance.
+fn check_lens(c: &Camera, at: &[Seg]) -> Check {
+    let key = |k: &'static str| [at, &[Key(k)]].concat();
+    match c.projection {
+        Projection::Pinhole if !(c.vfov_deg > 0.0 && c.vfov_deg < 180.0) => {
+            return fail(&key("vfov_deg"), c.vfov_deg, "must be in (0, 180) degrees");
+        }
+        Projection::Fisheye if !(c.vfov_deg > 0.0 && c.vfov_deg <= 360.0) => {
+            return fail(
+                &key("vfov_deg"),
+                c.vfov_deg,
+                "must be in (0, 360] degrees for a fisheye (the field across its circle)",
+            );
+        }
+        _ => {}
+    }
+    let lens = |k: &'static str| [Key("camera"), Key(k)];
+    if c.stereo == Stereo::Ods && c.projection != Projection::Equirect {
         return fail(
-            at,
-            name,
-            "needs spin = 0: \"flat\" is the Schwarzschild comparison mapping",
+            &lens("stereo"),
+            "\"ods\"",
+            format!(
+                "needs camera.projection = \"equirect\" (it is \"{}\")",
+                c.projection.name()
+            ),
         );
     }
-    let half = 0.5 * k.hole.rs;
-    match k.observer_velocity(c.observer, position) {
-        Ok(_) => Ok(()),
-        Err(PlacementError::InsideHorizon) => fail(
-            at,
-            name,
+    if !(c.ipd.in_range() && c.ipd >= 0.0) {
+        return fail(&lens("ipd"), c.ipd, "must be a finite distance >= 0 (rs)");
+    }
+    if c.stereo == Stereo::Ods && c.ipd <= 0.0 {
+        return fail(&lens("ipd"), c.ipd, "must be > 0 with stereo = \"ods\"");
+    }
+    Ok(())
+}
+
+/// A view direction, and an up that is not along it.
+fn check_view(c: &Camera, at: &[Seg]) -> Check {
+    let key = |k: &'static str| [at, &[Key(k)]].concat();
+    let fwd = DVec3::from(c.look_at) - DVec3::from(c.position);
+    if fwd.length() < 1e-9 {
+        let why = format!("must differ from {}", display_path(&key("position")));
+        return fail(&key("look_at"), vec3(&c.look_at), why);
+    }
+    if DVec3::from(c.up).cross(fwd.normalize()).length() >= 1e-6 {
+        return Ok(());
+    }
+    if at == [Key("camera")] {
+        fail(
+            &key("up"),
+            vec3(&c.up),
+            "must not be zero or parallel to the view direction",
+        )
+    } else {
+        let why = format!(
+            "makes the view direction parallel to camera.up = {}",
+            vec3(&c.up)
+        );
+        fail(&key("look_at"), vec3(&c.look_at), why)
+    }
+}
+
+/// Why the camera's observer cannot stand where it is
+/// ([`Spacetime::placement`]), worded for the scene's keys.
+fn refuse(c: &Camera, at: &[Seg], refusal: Refusal) -> Check {
+    let key = |k: &'static str| [at, &[Key(k)]].concat();
+    let position = || vec3(&c.position);
+    let name = format!("\"{}\"", c.observer.name());
+    match refusal {
+        Refusal::InsideHorizon { hole } => fail(
+            &key("position"),
+            position(),
+            format!("is inside the horizon of black_hole[{hole}]"),
+        ),
+        Refusal::InsidePhotonSphere { r, photon } => fail(
+            &key("position"),
+            position(),
             format!(
-                "stands inside the spinning hole's horizon (r+ = {:.4} rs)",
-                k.horizon()
+                "is inside the photon sphere (r = {r:.4} <= 1.5 rs = {photon}), where no \
+                 \"orbiting\" observer can be"
             ),
         ),
-        Err(PlacementError::StaticInErgoregion(r, r_ergo)) => fail(
-            at,
-            name,
+        Refusal::OnDiskAxis => fail(
+            &key("position"),
+            position(),
+            "is on the disk's axis, where an \"orbiting\" observer's orbit has no direction",
+        ),
+        Refusal::FallingTooClose { r, rs } => fail(
+            &key("position"),
+            position(),
             format!(
-                "cannot stand inside the ergoregion (r = {:.4} rs, r_ergo = {:.4} rs): use \"zamo\" or \"falling\"",
-                r * half,
-                r_ergo * half
+                "is {:.3e} rs from the horizon; a \"falling\" observer must stay at r >= {FALLING_MIN_R} rs \
+                 (closer, its speed is within 32-bit rounding of light's)",
+                r / rs - 1.0
             ),
         ),
-        Err(PlacementError::OrbitTooFast(v, r)) => fail(
-            at,
+        Refusal::FlatAroundSpin => fail(
+            &key("observer"),
+            name,
+            "needs spin = 0: \"flat\" is the Schwarzschild comparison mapping",
+        ),
+        Refusal::InsideSpinningHorizon { horizon } => fail(
+            &key("observer"),
+            name,
+            format!("stands inside the spinning hole's horizon (r+ = {horizon:.4} rs)"),
+        ),
+        Refusal::StaticInErgoregion { r, r_ergo } => fail(
+            &key("observer"),
             name,
             format!(
-                "would orbit faster than light there (v = {v:.4} c at r = {:.4} rs)",
-                r * half
+                "cannot stand inside the ergoregion (r = {r:.4} rs, r_ergo = {r_ergo:.4} rs): use \"zamo\" or \"falling\""
             ),
+        ),
+        Refusal::OrbitTooFast { v, r } => fail(
+            &key("observer"),
+            name,
+            format!("would orbit faster than light there (v = {v:.4} c at r = {r:.4} rs)"),
         ),
     }
 }

@@ -4,8 +4,10 @@
 
 use glam::DVec3;
 
+use super::placement::Refusal;
+use super::radii;
 use crate::physics::geodesic::disk_basis;
-use crate::physics::kerr::{self, KerrDisk, KerrObserver, KerrOutcome};
+use crate::physics::kerr::{self, KerrDisk, KerrObserver, KerrOutcome, PlacementError};
 use crate::physics::observer::ObserverKind;
 use crate::physics::{Disk, Hole, Outcome};
 
@@ -79,11 +81,7 @@ impl SpinningHole {
 
     /// The observer's velocity relative to the ZAMO at `position` (world
     /// axes), or why it cannot stand there.
-    pub fn observer_velocity(
-        &self,
-        kind: ObserverKind,
-        position: DVec3,
-    ) -> Result<DVec3, kerr::PlacementError> {
+    pub fn observer_velocity(&self, kind: ObserverKind, position: DVec3) -> Result<DVec3, Refusal> {
         let kind = match kind {
             ObserverKind::Zamo => KerrObserver::Zamo,
             ObserverKind::Static | ObserverKind::Flat => KerrObserver::Static,
@@ -91,21 +89,70 @@ impl SpinningHole {
             ObserverKind::Orbiting => KerrObserver::Orbiting,
         };
         let local = 2.0 * self.local(position - self.hole.position);
-        let beta = kerr::observer_velocity(kind, local, self.spin)?;
-        Ok(self.world(beta) / self.hole.rs)
+        let half = 0.5 * self.hole.rs;
+        match kerr::observer_velocity(kind, local, self.spin) {
+            Ok(beta) => Ok(self.world(beta) / self.hole.rs),
+            Err(PlacementError::InsideHorizon) => Err(Refusal::InsideSpinningHorizon {
+                horizon: self.horizon(),
+            }),
+            Err(PlacementError::StaticInErgoregion(r, r_ergo)) => {
+                Err(Refusal::StaticInErgoregion {
+                    r: r * half,
+                    r_ergo: r_ergo * half,
+                })
+            }
+            Err(PlacementError::OrbitTooFast(v, r)) => {
+                Err(Refusal::OrbitTooFast { v, r: r * half })
+            }
+        }
     }
 
     /// The outer horizon, the prograde equatorial photon orbit and the
     /// disk's ISCO (prograde for a* > 0, retrograde for a* < 0), in rs.
     pub fn horizon(&self) -> f64 {
-        0.5 * kerr::r_horizon(self.spin) * self.hole.rs
+        radii::horizon(self.hole.rs, self.spin)
     }
 
     pub fn photon_orbit(&self) -> f64 {
-        0.5 * kerr::r_photon_equatorial(self.spin.abs(), true) * self.hole.rs
+        radii::photon_orbit(self.hole.rs, self.spin, true)
     }
 
     pub fn isco(&self) -> f64 {
-        0.5 * kerr::r_isco(self.spin) * self.hole.rs
+        radii::isco(self.hole.rs, self.spin)
     }
+}
+
+/// An equatorial photon path around a hole spinning at `spin`, forward in
+/// time from Boyer-Lindquist (r, phi) = `start` (r in M) moving inward, with
+/// angular momentum `lambda` (M) and eta = 0: r and phi in closed form from
+/// Mino time (phi = phi_o + I_phi + lambda tau). Points in units of rs
+/// (x = r cos phi / 2, y = r sin phi / 2), `samples` along the path, kept
+/// where they lie more than `spacing` rs from the last one; stopped just
+/// outside the horizon, where Boyer-Lindquist phi winds without end.
+pub fn equatorial_path(
+    spin: f64,
+    lambda: f64,
+    start: (f64, f64),
+    samples: u32,
+    spacing: f64,
+) -> (Vec<(f64, f64)>, bool) {
+    let (r_o, phi_o) = start;
+    let rad = kerr::radial::Radial::new(spin, lambda, 0.0, r_o, -1.0);
+    let mut points: Vec<(f64, f64)> = Vec::new();
+    for i in 0..=samples {
+        let tau = rad.tau_end * f64::from(i) / f64::from(samples) * (1.0 - 1e-9);
+        let r = rad.r_at(tau);
+        if !r.is_finite() || r < 1.01 * rad.r_plus {
+            break;
+        }
+        let phi = phi_o + rad.i_phi(tau) + lambda * tau;
+        let p = (0.5 * r * phi.cos(), 0.5 * r * phi.sin());
+        let far = points
+            .last()
+            .is_none_or(|q: &(f64, f64)| (p.0 - q.0).hypot(p.1 - q.1) > spacing);
+        if far && p.0.is_finite() && p.1.is_finite() {
+            points.push(p);
+        }
+    }
+    (points, rad.captured)
 }

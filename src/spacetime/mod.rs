@@ -13,10 +13,13 @@
 //! twin (the same function set as `schwarzschild.glsl`).
 
 pub mod kerr;
+pub mod placement;
+pub mod radii;
 
 use glam::DVec3;
 
 pub use kerr::SpinningHole;
+pub use placement::{FALLING_MIN_R, Refusal};
 
 use crate::physics::observer::{Observer, ObserverKind};
 use crate::physics::{Disk, Hole, Outcome, TraceOptions, closed_form, geodesic, redshift};
@@ -119,6 +122,16 @@ impl Spacetime {
         }
         let gravity = !matches!(self, Spacetime::Flat(_));
         Observer::new(kind, position, self.holes(), disk_normal, gravity)
+    }
+
+    /// The observer holding the scene's camera (`[camera] observer` at its
+    /// position, an orbit's sense from the disk's normal).
+    pub fn camera_observer(&self, scene: &Scene) -> Observer {
+        self.observer(
+            scene.camera.observer,
+            DVec3::from(scene.camera.position),
+            DVec3::from(scene.disk.normal),
+        )
     }
 
     /// The redshift g = nu_obs / nu_emit, seen from far away, of light from

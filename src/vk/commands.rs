@@ -118,11 +118,11 @@ impl CommandContext {
     }
 
     /// Waits until the last submission has finished, at most
-    /// [`gpu_timeout`]: a frame that takes longer (a hung GPU) is an error
+    /// the device's `gpu_timeout` ([`super::GpuSettings`]): a frame that takes longer (a hung GPU) is an error
     /// (`vk::Result::TIMEOUT`), not a hang; so are a lost device and a
     /// device out of memory, which the fence reports.
     pub fn wait(&self) -> Result<()> {
-        let timeout = gpu_timeout();
+        let timeout = self.gpu.settings.gpu_timeout;
         // SAFETY: the fence is ours.
         let r = unsafe {
             self.gpu
@@ -146,15 +146,27 @@ impl CommandContext {
     }
 
     /// Before the caller frees what the last submission used: waits for it,
-    /// at most [`drop_timeout`], ignoring failures (the frame's own error was
+    /// at most [`super::GpuSettings::drop_timeout`], ignoring failures (the frame's own error was
     /// reported already).
     pub fn settle(&self) {
         // SAFETY: the fence is ours.
         let _ = unsafe {
-            self.gpu
-                .device
-                .wait_for_fences(&[self.fence], true, drop_timeout().as_nanos() as u64)
+            self.gpu.device.wait_for_fences(
+                &[self.fence],
+                true,
+                self.gpu.settings.drop_timeout().as_nanos() as u64,
+            )
         };
+    }
+
+    /// The failure injected for the tests, if any.
+    pub fn fault(&self) -> Option<&super::fault::Fault> {
+        self.gpu.settings.fault.as_ref()
+    }
+
+    /// The longest [`Self::wait`] waits.
+    pub fn timeout(&self) -> std::time::Duration {
+        self.gpu.settings.gpu_timeout
     }
 
     /// Ends recording, submits, and waits for the GPU to finish.
@@ -172,7 +184,11 @@ impl Drop for CommandContext {
         unsafe {
             let d = &self.gpu.device;
             if self.fence != vk::Fence::null() {
-                let _ = d.wait_for_fences(&[self.fence], true, drop_timeout().as_nanos() as u64);
+                let _ = d.wait_for_fences(
+                    &[self.fence],
+                    true,
+                    self.gpu.settings.drop_timeout().as_nanos() as u64,
+                );
                 d.destroy_fence(self.fence, None);
             }
             if self.pool != vk::CommandPool::null() {
@@ -180,16 +196,4 @@ impl Drop for CommandContext {
             }
         }
     }
-}
-
-/// Longest wait for one submission: `BLACKHOLE_GPU_TIMEOUT_S` seconds, or
-/// 600 (see [`crate::settings`]).
-pub fn gpu_timeout() -> std::time::Duration {
-    crate::settings::get().gpu_timeout
-}
-
-/// Longest wait before resources are freed: [`gpu_timeout`], but at least
-/// ten seconds (a frame that timed out may still finish).
-pub fn drop_timeout() -> std::time::Duration {
-    gpu_timeout().max(std::time::Duration::from_secs(10))
 }

@@ -9,10 +9,12 @@
 use std::ffi::CStr;
 use std::mem::ManuallyDrop;
 use std::sync::{Arc, Mutex, MutexGuard};
+use std::time::Duration;
 
 use ash::{ext, khr, vk};
 use gpu_allocator::vulkan::{Allocator, AllocatorCreateDesc};
 
+use super::fault::Fault;
 use super::instance::{Instance, Validation};
 use crate::error::VkContext;
 use crate::{Error, Result};
@@ -56,6 +58,8 @@ pub struct Gpu {
     allocator: ManuallyDrop<Arc<Mutex<Allocator>>>,
     /// Whether the queue can present and the swapchain extension is on.
     pub presents: bool,
+    /// What the caller asked of it (timeouts, injected faults).
+    pub settings: GpuSettings,
     pub instance: Instance,
 }
 
@@ -87,11 +91,46 @@ struct Candidate {
 /// Asks whether queue `family` of a device can present to the window's surface.
 pub type PresentCheck<'a> = &'a dyn Fn(&Instance, vk::PhysicalDevice, u32) -> bool;
 
+/// The wait limit for one submission unless the caller sets another: a 4K
+/// volumetric frame on a CPU driver takes seconds, not minutes.
+pub const DEFAULT_GPU_TIMEOUT_S: f64 = 600.0;
+
+/// What the caller asks of the device from outside Vulkan (the program's
+/// `BLACKHOLE_*` settings, [`crate::settings`], build it): vk/ reads no
+/// environment and no global of its own.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GpuSettings {
+    /// Part of the name of the device to use (`BLACKHOLE_DEVICE`).
+    pub device: Option<String>,
+    /// The longest wait for one submission (`BLACKHOLE_GPU_TIMEOUT_S`).
+    pub gpu_timeout: Duration,
+    /// A failure injected for the tests (`BLACKHOLE_FAULT`).
+    pub fault: Option<Fault>,
+}
+
+impl Default for GpuSettings {
+    fn default() -> Self {
+        GpuSettings {
+            device: None,
+            gpu_timeout: Duration::from_secs_f64(DEFAULT_GPU_TIMEOUT_S),
+            fault: None,
+        }
+    }
+}
+
+impl GpuSettings {
+    /// Longest wait before resources are freed: `gpu_timeout`, but at least
+    /// ten seconds (a frame that timed out may still finish).
+    pub fn drop_timeout(&self) -> Duration {
+        self.gpu_timeout.max(Duration::from_secs(10))
+    }
+}
+
 impl Gpu {
     /// Creates the instance and picks a device: discrete > integrated > virtual >
-    /// CPU, or the first whose name contains `BLACKHOLE_DEVICE`.
-    pub fn new(validation: Validation) -> Result<Arc<Self>> {
-        Self::open(Instance::new(validation)?, None)
+    /// CPU, or the first whose name contains `settings.device`.
+    pub fn new(validation: Validation, settings: GpuSettings) -> Result<Arc<Self>> {
+        Self::open(Instance::new(validation)?, None, settings)
     }
 
     /// Picks a device on `instance`. With `present`, the queue must also do
@@ -100,7 +139,11 @@ impl Gpu {
     /// The device to use: the first of the usable devices (the one
     /// `BLACKHOLE_DEVICE` names, if set) by kind, discrete first; why none
     /// is, if none is.
-    fn choose(instance: &Instance, present: Option<PresentCheck<'_>>) -> Result<Candidate> {
+    fn choose(
+        instance: &Instance,
+        present: Option<PresentCheck<'_>>,
+        wanted: Option<&str>,
+    ) -> Result<Candidate> {
         let inst = &instance.instance;
 
         // SAFETY: valid instance.
@@ -119,9 +162,8 @@ impl Gpu {
             .map(|&pd| Self::describe(instance, pd, present))
             .collect::<Result<_>>()?;
 
-        let wanted = crate::settings::get().device.clone();
         let names: Vec<String> = candidates.iter().map(|c| c.name.clone()).collect();
-        if let Some(w) = &wanted {
+        if let Some(w) = wanted {
             let lw = w.to_lowercase();
             candidates.retain(|c| c.name.to_lowercase().contains(&lw));
             if candidates.is_empty() {
@@ -155,8 +197,12 @@ impl Gpu {
         Ok(chosen)
     }
 
-    pub fn open(instance: Instance, present: Option<PresentCheck<'_>>) -> Result<Arc<Self>> {
-        let chosen = Self::choose(&instance, present)?;
+    pub fn open(
+        instance: Instance,
+        present: Option<PresentCheck<'_>>,
+        settings: GpuSettings,
+    ) -> Result<Arc<Self>> {
+        let chosen = Self::choose(&instance, present, settings.device.as_deref())?;
         let inst = &instance.instance;
         let is_13 = chosen.api_version >= vk::API_VERSION_1_3;
         let mut ext_names = vec![khr::push_descriptor::NAME.as_ptr()];
@@ -240,6 +286,7 @@ impl Gpu {
             sync2_khr,
             allocator: ManuallyDrop::new(Arc::new(Mutex::new(allocator))),
             presents: present.is_some(),
+            settings,
             instance,
         }))
     }

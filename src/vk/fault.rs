@@ -9,8 +9,9 @@
 //! - `alloc:<name>`: allocating memory for the first resource whose name
 //!   contains `<name>` fails as gpu-allocator's out-of-memory does.
 //!
-//! Unset (the normal case) nothing changes. An unknown value is refused like
-//! any other bad setting ([`crate::settings`]).
+//! Unset (the normal case) nothing changes. The caller parses the setting
+//! ([`parse`]) and hands the fault to the device in its
+//! [`super::GpuSettings`]; vk/ reads no environment itself.
 
 use ash::vk;
 
@@ -21,11 +22,6 @@ pub enum Fault {
     Wait(vk::Result),
     /// Allocating memory for a resource whose name contains this fails.
     Alloc(String),
-}
-
-/// The fault `BLACKHOLE_FAULT` asks for, if any.
-pub fn injected() -> Option<&'static Fault> {
-    crate::settings::get().fault.as_ref()
 }
 
 /// `device-lost`, `out-of-device-memory` or `alloc:<name>`; `None` otherwise.
@@ -40,18 +36,18 @@ pub fn parse(v: &str) -> Option<Fault> {
     }
 }
 
-/// The result a frame wait is to fail with, if a fault is injected.
-pub fn wait_fault() -> Option<vk::Result> {
-    match injected()? {
+/// The result a frame wait is to fail with, if `fault` asks for one.
+pub fn wait_fault(fault: Option<&Fault>) -> Option<vk::Result> {
+    match fault? {
         Fault::Wait(r) => Some(*r),
         Fault::Alloc(_) => None,
     }
 }
 
-/// Whether allocating memory for `name` is to fail (once).
-pub fn alloc_fault(name: &str) -> bool {
+/// Whether allocating memory for `name` is to fail (once) under `fault`.
+pub fn alloc_fault(fault: Option<&Fault>, name: &str) -> bool {
     static FIRED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
-    match injected() {
+    match fault {
         Some(Fault::Alloc(n)) if name.contains(n.as_str()) => {
             !FIRED.swap(true, std::sync::atomic::Ordering::Relaxed)
         }

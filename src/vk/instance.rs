@@ -15,7 +15,8 @@ use crate::{Error, Result};
 
 const VALIDATION_LAYER: &CStr = c"VK_LAYER_KHRONOS_validation";
 
-/// Whether validation should be enabled, from the environment and build.
+/// Whether validation should be enabled (the caller decides, from its
+/// settings and build: [`crate::settings::Settings::validation_mode`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Validation {
     /// Required: fail if the layer is missing.
@@ -24,19 +25,6 @@ pub enum Validation {
     IfPresent,
     /// Off.
     Off,
-}
-
-impl Validation {
-    /// `BLACKHOLE_VALIDATION=1` requires it, `=0` turns it off; otherwise debug
-    /// builds enable it when present.
-    pub fn from_env() -> Self {
-        match crate::settings::get().validation {
-            Some(true) => Validation::Required,
-            Some(false) => Validation::Off,
-            None if cfg!(debug_assertions) => Validation::IfPresent,
-            None => Validation::Off,
-        }
-    }
 }
 
 /// Errors and warnings of every kind go to `debug_callback`, which counts

@@ -16,7 +16,7 @@ pub fn allocate(
     location: MemoryLocation,
     linear: bool,
 ) -> Result<Allocation> {
-    if super::fault::alloc_fault(name) {
+    if super::fault::alloc_fault(gpu.settings.fault.as_ref(), name) {
         return Err(Error::Allocation {
             what: format!("allocating memory for `{name}` (BLACKHOLE_FAULT)"),
             source: gpu_allocator::AllocationError::OutOfMemory,

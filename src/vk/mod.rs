@@ -15,9 +15,9 @@ pub mod sync;
 pub mod timestamps;
 
 pub use buffer::{Buffer, BufferBinding};
-pub use commands::{CommandContext, gpu_timeout};
+pub use commands::CommandContext;
 pub use descriptors::{Descriptor, bind_compute, push_constants};
-pub use device::{DeviceInfo, Gpu, PresentCheck};
+pub use device::{DEFAULT_GPU_TIMEOUT_S, DeviceInfo, Gpu, GpuSettings, PresentCheck};
 pub use image::{Image, ImageBinding, ImageDesc, Sampler};
 pub use instance::{Instance, Validation};
 pub use pipeline::{BindingKind, ComputePipeline};

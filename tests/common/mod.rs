@@ -121,20 +121,14 @@ pub fn renderer() -> blackhole::Renderer {
 }
 
 /// The ray march's passes in a frame of `scene` at `width` x `height` on
-/// this renderer's device: split into a trace pass and a disk pass (after
-/// clearing the disk's work list) where the device and the frame gain by it
-/// (a CPU device), one dispatch otherwise.
+/// this renderer's device (the pass's own names and split decision).
 pub fn ray_march_passes(
     r: &blackhole::Renderer,
     scene: &blackhole::Scene,
     width: u32,
     height: u32,
 ) -> Vec<&'static str> {
-    if r.features().splits(scene, width, height) {
-        vec!["disk list clear", "raymarch", "raymarch disk"]
-    } else {
-        vec!["raymarch"]
-    }
+    r.ray_march_passes(scene, width, height)
 }
 
 /// Prints why a test checked nothing on this device (a capability it

@@ -164,7 +164,7 @@ Hit metric_trace(vec3 x, vec3 d) {
             // lane, taken or not, but a loop's later turns run only while a
             // lane of the SIMD group still needs them (the first always runs).
             float next = phi0 <= 1e-6 ? phi0 + PI : phi0;  // the next crossing ahead
-            if (DISK_STAGE == DISK_STAGE_TRACE) {
+            if (SPLIT_STAGE == STAGE_TRACE) {
                 // Left to the disk pass: any crossing in the windows.
                 hit.deferred = min(first_crossing_in(path, path.win_a, next),
                                    first_crossing_in(path, path.win_b, next)) < 1e29;

@@ -8,24 +8,13 @@
 //! integrated in Cartesian coordinates with adaptive Dormand-Prince 5(4),
 //! so the holes' pulls can be summed.
 //!
-//! One hole with a thin disk is split in two dispatches (on devices with
-//! subgroup ballots): `raymarch` traces every pixel's path to the sky or the
-//! horizon and lists the pixels whose path crosses the disk's annulus;
-//! `raymarch disk`, dispatched indirectly over that list, adds the disk's
-//! light in front of what `raymarch` wrote. On a CPU driver every branch of
-//! a shader costs every pixel, taken or not, so in one dispatch the disk's
-//! crossings cost the whole frame; split, they cost the pixels that cross it
-//! (a quarter of the default view). Those pixels pay for their path twice,
-//! so where the disk fills much of the view the one dispatch is cheaper:
-//! [`split_pays`] estimates the disk's share of the frame on the CPU.
-//!
-//! A spinning hole splits by its paths instead (any disk): `raymarch`
-//! carries the common ones (shaders/include/metric/kerr.glsl,
-//! `KERR_COMMON_ONLY`: the radial case 2 whose turning point lies outside
-//! the horizon, the polar motion that crosses the equator) with the code of
-//! the others compiled out, and lists the 2x2 quads where a path needs the
-//! rest; `raymarch rare` redoes those quads with the whole shader, ray
-//! differentials and all. The trace pass takes the build with 32-bit roots
+//! Where it pays, the ray march is split into a trace pass over every
+//! pixel and a deferred pass, dispatched indirectly over the pixels the
+//! trace pass lists, for the rare, expensive paths: a non-rotating hole's
+//! thin disk (`raymarch disk`), a spinning hole's uncommon radial and polar
+//! motions (`raymarch rare`). [`crate::deferred`] says what is deferred and
+//! decides when; this pass records the two dispatches and the list between
+//! them. The spinning hole's trace pass takes the build with 32-bit roots
 //! and defers the paths near the shadow's edge too; the second pass keeps
 //! the device's. In the default view at a* = 0.9 it defers about 4 % of the
 //! pixels (the disk in front of the shadow) and the frame falls from about
@@ -42,9 +31,10 @@ use std::sync::Arc;
 
 use super::{VariantCache, dispatch_2d, dispatch_indirect};
 use crate::Result;
+use crate::deferred;
+use crate::features::Features;
 use crate::graph::{BufferHandle, Graph, ImageDesc, ImageHandle, Mips};
-use crate::render::Features;
-use crate::scene::{DiskKind, Scene, VolumeColor};
+use crate::scene::{Scene, VolumeColor};
 use crate::shaders::{self, RaymarchBuild};
 use crate::spacetime::{GpuPath, Spacetime};
 use crate::vk::{Access, BindingKind, Buffer, ComputePipeline, Descriptor, Gpu, Sampler};
@@ -61,9 +51,9 @@ pub mod glsl {
     pub const SKY_STARS: u32 = 2;
     pub const SKY_IMAGE: u32 = 3;
     pub const SKY_CATALOGUE: u32 = 4;
-    pub const DISK_STAGE_ALL: u32 = 0;
-    pub const DISK_STAGE_TRACE: u32 = 1;
-    pub const DISK_STAGE_DISK: u32 = 2;
+    pub const STAGE_ALL: u32 = 0;
+    pub const STAGE_TRACE: u32 = 1;
+    pub const STAGE_DEFERRED: u32 = 2;
     pub const PROJ_PINHOLE: u32 = 0;
     pub const PROJ_EQUIRECT: u32 = 1;
     pub const PROJ_FISHEYE: u32 = 2;
@@ -71,7 +61,7 @@ pub mod glsl {
     pub const STEREO_ODS: u32 = 1;
     /// Workgroups (of 64 listed pixels) in one row of the disk pass's
     /// indirect dispatch.
-    pub const DISK_ROW: u32 = 256;
+    pub const DEFERRED_ROW: u32 = 256;
     pub const LUT_MIN_K: f64 = crate::physics::blackbody::LUT_MIN_K;
     pub const LUT_MAX_K: f64 = crate::physics::blackbody::LUT_MAX_K;
 }
@@ -113,72 +103,9 @@ pub struct RaymarchInputs<'h> {
     pub size: (u32, u32),
     /// Which specialisation of the shader the scene needs.
     pub variant: Variant,
-    /// Split the thin disk off into its own pass if the device can
-    /// ([`split_pays`]).
+    /// Split the ray march into a trace pass and a deferred pass if the
+    /// device can ([`crate::deferred::pays`]).
     pub split: bool,
-}
-
-/// The largest share of the pixels crossing the thin disk at which the split
-/// ray march pays. Measured on lavapipe at 1280x720 (frame ms, split against
-/// one dispatch, by the share of disk pixels): falling 4 % 57 / 68, edge-on
-/// 13 % 50 / 58, default 23 % 55 / 60, top-down 49 % 67 / 61, doppler 60 %
-/// 80 / 62; the difference crosses zero near a third.
-pub const SPLIT_MAX_DISK_SHARE: f64 = 0.3;
-
-/// The largest share of the pixels whose paths the spinning hole's trace
-/// pass defers at which its split ray march pays (the deferred 2x2 quads
-/// cost the whole shader again, about twice the trace pass's per pixel).
-pub const SPLIT_MAX_DEFERRED_SHARE: f64 = 0.3;
-
-/// Whether splitting the ray march pays for this frame: the share of a 16 x
-/// 9 grid of the frame's rays, traced in closed form on the CPU (about 0.1
-/// ms), that cross the thin disk's annulus (one non-rotating hole) is below
-/// [`SPLIT_MAX_DISK_SHARE`], or that the spinning hole's trace pass would
-/// defer ([`crate::spacetime::SpinningHole::defers`]) is below
-/// [`SPLIT_MAX_DEFERRED_SHARE`]. (Asked only through
-/// [`crate::render::Features::splits`], where the device splits at all.)
-pub fn split_pays(scene: &Scene, width: u32, height: u32) -> bool {
-    let spacetime = Spacetime::of(scene);
-    let disk = crate::physics::Disk {
-        normal: glam::DVec3::from(scene.disk.normal),
-        inner: scene.disk.inner_radius,
-        outer: scene.disk.outer_radius,
-    };
-    let thin = (scene.disk.kind == DiskKind::Thin).then_some(&disk);
-    let frame = scene.camera.frame();
-    let observer = scene.observer();
-    // The share of a grid's rays for which `counts` holds.
-    let share = |counts: &dyn Fn(glam::DVec3, glam::DVec3) -> bool| {
-        let (cols, rows) = (16u32, 9u32);
-        let mut n = 0;
-        for row in 0..rows {
-            for col in 0..cols {
-                // The pixel at the centre of each cell of the grid.
-                let x = ((2 * col + 1) * width / (2 * cols)).min(width - 1);
-                let y = ((2 * row + 1) * height / (2 * rows)).min(height - 1);
-                let Some(ray) = frame.pixel_ray(x, y, width, height, (0.0, 0.0)) else {
-                    continue;
-                };
-                if counts(ray.origin, observer.coordinate_direction(ray.dir)) {
-                    n += 1;
-                }
-            }
-        }
-        f64::from(n) / f64::from(cols * rows)
-    };
-    match &spacetime {
-        Spacetime::Kerr(hole) => {
-            share(&|x0, d| hole.defers(thin, x0, d)) < SPLIT_MAX_DEFERRED_SHARE
-        }
-        Spacetime::Schwarzschild(_) if thin.is_some() => {
-            let on_disk = |x0, d| {
-                let outcome = spacetime.trace(thin, x0, d, &Default::default());
-                matches!(outcome, crate::physics::Outcome::Disk { .. })
-            };
-            share(&on_disk) < SPLIT_MAX_DISK_SHARE
-        }
-        _ => false,
-    }
 }
 
 /// A build of raymarch.comp (its metric, and the AOV build) and its
@@ -205,9 +132,9 @@ pub struct Variant {
     /// The volumetric disk glows as a blackbody (else the colour map)
     /// (constant 6).
     pub volume_blackbody: bool,
-    /// The part of the split thin-disk ray march, `glsl::DISK_STAGE_*`
+    /// The part of the split thin-disk ray march, `glsl::SPLIT_STAGE_*`
     /// (constant 7).
-    pub disk_stage: u32,
+    pub stage: u32,
     /// The observer moves through the static frame: aberration (constant 8).
     pub observer_moves: bool,
     /// The thin disk's temperature is Page and Thorne's (constant 9).
@@ -218,10 +145,10 @@ pub struct Variant {
 
 impl Variant {
     /// The variant a scene needs.
-    pub fn of(scene: &Scene, aov: bool) -> Variant {
+    pub fn of(scene: &Scene, spacetime: &Spacetime, aov: bool) -> Variant {
         Variant {
             aov,
-            path: Spacetime::of(scene).gpu_path(),
+            path: spacetime.gpu_path(),
             disk: disk_kind(scene),
             sky: sky_kind(scene),
             plane: scene.plane.enabled,
@@ -233,8 +160,8 @@ impl Variant {
                 1
             },
             volume_blackbody: scene.disk.color == VolumeColor::Blackbody,
-            disk_stage: glsl::DISK_STAGE_ALL,
-            observer_moves: scene.observer().beta != glam::DVec3::ZERO,
+            stage: glsl::STAGE_ALL,
+            observer_moves: spacetime.camera_observer(scene).beta != glam::DVec3::ZERO,
             page_thorne: scene.disk.temperature_profile
                 == crate::scene::TemperatureProfile::PageThorne,
             projection: match scene.camera.projection {
@@ -246,17 +173,12 @@ impl Variant {
     }
 
     /// The pipelines one frame of this variant runs, in order: the trace and
-    /// disk passes for one hole with a thin disk when `split` (the device
-    /// has subgroup ballots), else itself.
+    /// deferred passes when `split` and the variant has a deferred pass
+    /// ([`crate::deferred::applies`]), else itself.
     pub fn stages(self, split: bool) -> Vec<Variant> {
-        let splits = match self.path {
-            GpuPath::ClosedForm => self.disk == glsl::DISK_THIN,
-            GpuPath::Kerr => true,
-            GpuPath::Straight | GpuPath::Integrated => false,
-        };
-        if split && splits && !self.aov {
-            [glsl::DISK_STAGE_TRACE, glsl::DISK_STAGE_DISK]
-                .map(|disk_stage| Variant { disk_stage, ..self })
+        if split && deferred::applies(self.path, self.disk == glsl::DISK_THIN) && !self.aov {
+            [glsl::STAGE_TRACE, glsl::STAGE_DEFERRED]
+                .map(|stage| Variant { stage, ..self })
                 .to_vec()
         } else {
             vec![self]
@@ -273,7 +195,7 @@ impl Variant {
         "THIN_STRUCTURE",
         "THIN_CROSSINGS",
         "VOLUME_BLACKBODY",
-        "DISK_STAGE",
+        "SPLIT_STAGE",
         "OBSERVER_MOVES",
         "PAGE_THORNE",
         "PROJECTION",
@@ -288,7 +210,7 @@ impl Variant {
             u32::from(self.structure),
             self.thin_crossings,
             u32::from(self.volume_blackbody),
-            self.disk_stage,
+            self.stage,
             u32::from(self.observer_moves),
             u32::from(self.page_thorne),
             self.projection,
@@ -307,7 +229,7 @@ impl Variant {
             self.structure,
             self.thin_crossings,
             self.volume_blackbody,
-            self.disk_stage,
+            self.stage,
             self.observer_moves,
             self.page_thorne,
             self.projection
@@ -368,7 +290,7 @@ impl RaymarchPipelines {
         self.cache.get(variant, || {
             let build = if variant.aov {
                 RaymarchBuild::Aov
-            } else if variant.disk_stage != glsl::DISK_STAGE_ALL {
+            } else if variant.stage != glsl::STAGE_ALL {
                 RaymarchBuild::Split
             } else if self.features.ray_differentials {
                 RaymarchBuild::Beauty
@@ -378,7 +300,7 @@ impl RaymarchPipelines {
             // The spinning hole's split trace pass takes the 32-bit roots
             // (it defers the paths near the shadow's edge, where they lose
             // precision, to the second pass, which keeps the device's).
-            let trace = variant.disk_stage == glsl::DISK_STAGE_TRACE;
+            let trace = variant.stage == glsl::STAGE_TRACE;
             let kerr_f64 = self.features.kerr_f64 && !(variant.path == GpuPath::Kerr && trace);
             let spirv = shaders::raymarch(variant.path, build, kerr_f64).ok_or_else(|| {
                 crate::Error::Other(format!(
@@ -404,7 +326,34 @@ impl RaymarchPipelines {
     /// The ray-march pipelines one frame of `variant` runs on this device
     /// ([`Variant::stages`]), split if `split` and the device can.
     pub fn stages(&self, variant: Variant, split: bool) -> Vec<Variant> {
-        variant.stages(split && self.features.disk_split)
+        variant.stages(split && self.features.split)
+    }
+}
+
+/// The ray march's pass (the whole of it, or the split's trace pass).
+pub const TRACE_PASS: &str = "raymarch";
+/// The split's pass that empties the deferred list before the trace pass.
+pub const LIST_CLEAR_PASS: &str = "deferred list clear";
+
+/// The split's deferred pass on `path`: a non-rotating hole's thin disk, a
+/// spinning hole's rare paths.
+pub fn deferred_pass_name(path: GpuPath) -> &'static str {
+    match path {
+        GpuPath::Kerr => "raymarch rare",
+        _ => "raymarch disk",
+    }
+}
+
+/// The passes the ray march of `variant` adds, in order, split or not.
+pub fn pass_names(variant: Variant, split: bool) -> Vec<&'static str> {
+    if variant.stages(split).len() == 2 {
+        vec![
+            LIST_CLEAR_PASS,
+            TRACE_PASS,
+            deferred_pass_name(variant.path),
+        ]
+    } else {
+        vec![TRACE_PASS]
     }
 }
 
@@ -432,20 +381,20 @@ pub fn add_raymarch<'a>(
         add_stage(graph, pipelines, params, images, hdr, variant, stage);
     };
     let stages = pipelines.stages(variant, split);
-    let [trace, disk] = stages[..] else {
+    let [trace, deferred] = stages[..] else {
         stage(graph, &mut hdr, variant, Stage::Whole);
         return hdr;
     };
 
-    // The disk pass's work list (a count, then one packed pixel each; whole
+    // The deferred pass's work list (a count, then one packed pixel each; whole
     // 2x2 quads for a split by paths, so up to the size rounded up to even)
     // and its indirect dispatch, emptied first.
     let pixels = u64::from(width.next_multiple_of(2)) * u64::from(height.next_multiple_of(2));
-    let mut work = DiskWork {
-        list: graph.create_buffer("disk list", 4 + 4 * pixels),
-        dispatch: graph.create_buffer("disk dispatch", 16),
+    let mut work = DeferredWork {
+        list: graph.create_buffer("deferred list", 4 + 4 * pixels),
+        dispatch: graph.create_buffer("deferred dispatch", 16),
     };
-    let mut pass = graph.add_pass("disk list clear");
+    let mut pass = graph.add_pass(LIST_CLEAR_PASS);
     let list = pass.write_buffer(&mut work.list, Access::TransferWrite);
     let dispatch = pass.write_buffer(&mut work.dispatch, Access::TransferWrite);
     pass.record(move |ctx| {
@@ -457,19 +406,19 @@ pub fn add_raymarch<'a>(
                 ctx.cmd,
                 dispatch,
                 0,
-                // groups_y grows from 0 with groups_x (rows of DISK_ROW).
+                // groups_y grows from 0 with groups_x (rows of DEFERRED_ROW).
                 bytemuck::bytes_of(&[0u32, 0, 1, 0]),
             );
         }
         Ok(())
     });
     stage(graph, &mut hdr, trace, Stage::Trace(&mut work));
-    stage(graph, &mut hdr, disk, Stage::Disk(&work));
+    stage(graph, &mut hdr, deferred, Stage::Deferred(&work));
     hdr
 }
 
 /// The split ray march's work list and its indirect dispatch.
-struct DiskWork {
+struct DeferredWork {
     list: BufferHandle,
     dispatch: BufferHandle,
 }
@@ -479,10 +428,10 @@ enum Stage<'w> {
     /// The whole ray march, every pixel.
     Whole,
     /// The trace pass: every pixel, appending to the work list.
-    Trace(&'w mut DiskWork),
-    /// The disk pass: dispatched indirectly over the list, reading back
+    Trace(&'w mut DeferredWork),
+    /// The deferred pass: dispatched indirectly over the list, reading back
     /// what the trace pass wrote.
-    Disk(&'w DiskWork),
+    Deferred(&'w DeferredWork),
 }
 
 /// Adds one ray-march dispatch of `variant` writing `hdr`.
@@ -496,11 +445,11 @@ fn add_stage<'a>(
     stage: Stage<'_>,
 ) {
     let (width, height) = (hdr.desc.width, hdr.desc.height);
-    let indirect = matches!(stage, Stage::Disk(_));
-    let mut pass = graph.add_pass(match (indirect, variant.path) {
-        (false, _) => "raymarch",
-        (true, GpuPath::Kerr) => "raymarch rare",
-        (true, _) => "raymarch disk",
+    let indirect = matches!(stage, Stage::Deferred(_));
+    let mut pass = graph.add_pass(if indirect {
+        deferred_pass_name(variant.path)
+    } else {
+        TRACE_PASS
     });
     let sampled = Access::ComputeSampledRead;
     let block = pass.read_buffer(params, Access::ComputeStorageRead);
@@ -521,7 +470,7 @@ fn add_stage<'a>(
             )),
             Access::ComputeStorageWrite,
         ),
-        Stage::Disk(w) => (
+        Stage::Deferred(w) => (
             Some((
                 pass.read_buffer(&w.list, Access::ComputeStorageRead),
                 pass.read_buffer(&w.dispatch, Access::IndirectRead),
@@ -558,44 +507,4 @@ fn add_stage<'a>(
             dispatch_2d(ctx, &pipeline, &descriptors, &[], width, height)
         }
     });
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The presets' shares of disk pixels at 1280x720 (the geodesic AOV):
-    /// falling 4 %, edge-on 13 %, default 23 %, top-down 49 %, doppler 60 %.
-    #[test]
-    fn the_split_is_taken_where_the_disk_fills_little_of_the_view() {
-        let pays = |name: &str| split_pays(&Scene::load(name).unwrap(), 1280, 720);
-        for name in ["falling", "edge-on", "default"] {
-            assert!(pays(name), "{name}");
-        }
-        for name in [
-            "top-down",
-            "doppler",
-            "interstellar",
-            "no-gravity",
-            "binary",
-        ] {
-            assert!(!pays(name), "{name}");
-        }
-    }
-
-    /// The spinning hole splits where its trace pass defers few paths (the
-    /// presets, the default view spun up), not where the shadow fills the
-    /// view (measured at 1280x720 on lavapipe: deferred share 0.33, split
-    /// 582 to 651 ms a frame against 613 to 617 in one dispatch; 0.27, 518
-    /// to 527 against 664 to 669; the default view at a* = 0.9, 0.02).
-    #[test]
-    fn the_spinning_hole_splits_where_few_paths_are_deferred() {
-        let spun = |toml: &str| Scene::from_toml(toml, "test.toml").unwrap();
-        for name in ["gargantua", "kerr-doppler"] {
-            assert!(split_pays(&Scene::load(name).unwrap(), 1280, 720), "{name}");
-        }
-        assert!(split_pays(&spun("[[black_hole]]\nspin = 0.9\n"), 1280, 720));
-        let close = "[[black_hole]]\nspin = 0.9\n[camera]\nposition = [0.0, 0.4, -3.0]\n";
-        assert!(!split_pays(&spun(close), 1280, 720));
-    }
 }

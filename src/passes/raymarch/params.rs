@@ -12,7 +12,7 @@ use glam::DVec3;
 
 use super::glsl;
 use crate::scene::{DiskKind, MAX_HOLES, Scene, SkyKind, VolumeColor};
-use crate::spacetime::{GpuPath, Spacetime};
+use crate::spacetime::{GpuPath, Spacetime, radii};
 
 /// `[camera]` as the shader takes it: the frame's basis and the image.
 #[repr(C)]
@@ -246,7 +246,7 @@ fn page_thorne(scene: &Scene) -> DiskParams {
         return DiskParams::default();
     }
     let a = scene.black_holes.first().map_or(0.0, |h| h.spin);
-    let pt = crate::physics::kerr::PageThorne::new(a);
+    let pt = radii::page_thorne(a);
     DiskParams {
         profile: 1.0,
         pt_roots: [pt.x0, pt.roots[0], pt.roots[1], pt.roots[2]].map(|x| x as f32),
@@ -261,12 +261,13 @@ fn nt_profile_at_peak(r_in: f64) -> f64 {
 }
 
 impl RaymarchParams {
-    /// The block for `scene` (at its `time`) and one frame.
-    pub fn new(scene: &Scene, frame: &FrameSpec) -> Self {
+    /// The block for `scene` (at its `time`), whose spacetime is
+    /// `spacetime`, and one frame.
+    pub fn new(scene: &Scene, spacetime: &Spacetime, frame: &FrameSpec) -> Self {
         RaymarchParams {
             camera: camera(scene, frame),
-            observer: observer(scene),
-            metric: metric(&Spacetime::of(scene)),
+            observer: observer(scene, spacetime),
+            metric: metric(spacetime),
             integrator: IntegratorParams {
                 tolerance: scene.quality.tolerance as f32,
                 escape_radius: scene.escape_radius() as f32,
@@ -303,8 +304,8 @@ fn camera(scene: &Scene, frame: &FrameSpec) -> CameraParams {
     }
 }
 
-fn observer(scene: &Scene) -> ObserverParams {
-    let obs = scene.observer();
+fn observer(scene: &Scene, spacetime: &Spacetime) -> ObserverParams {
+    let obs = spacetime.camera_observer(scene);
     ObserverParams {
         velocity: v3(obs.beta),
         kind: obs.kind as u32 as f32,
@@ -350,10 +351,7 @@ fn disk(scene: &Scene) -> DiskParams {
         peak_temperature: d.temperature_k as f32,
         // The profile's own peak: T / T_peak is 1 at the hottest ring.
         nt_peak: if d.temperature_profile == crate::scene::TemperatureProfile::PageThorne {
-            crate::physics::kerr::page_thorne_peak(
-                scene.black_holes.first().map_or(0.0, |h| h.spin),
-            )
-            .1 as f32
+            radii::page_thorne_peak(scene.black_holes.first().map_or(0.0, |h| h.spin)) as f32
         } else {
             nt_profile_at_peak(d.inner_radius) as f32
         },
@@ -442,7 +440,7 @@ mod tests {
             scene.black_holes[0].spin = spin;
             scene.disk.temperature_profile = profile;
             let peak = f64::from(
-                RaymarchParams::new(&scene, &FrameSpec::new(8, 8))
+                RaymarchParams::new(&scene, &Spacetime::of(&scene), &FrameSpec::new(8, 8))
                     .disk
                     .nt_peak,
             );
@@ -450,11 +448,7 @@ mod tests {
             let t4 = |r_rs: f64| match profile {
                 TemperatureProfile::PageThorne => {
                     let r = 2.0 * r_rs;
-                    if r <= crate::physics::kerr::r_isco(spin) {
-                        0.0
-                    } else {
-                        crate::physics::kerr::page_thorne_f(r, spin) / r
-                    }
+                    radii::page_thorne_flux(r, spin) / r
                 }
                 TemperatureProfile::Newtonian => r_rs.powi(-3) * (1.0 - (r_in / r_rs).sqrt()),
             };
