@@ -306,7 +306,7 @@ fn a_scene_saved_from_the_panel_loads_back_unchanged() {
     scene.disk.temperature_k = 7321.0;
     scene.bloom.levels = 5;
     let p = path.to_str().expect("utf-8 path");
-    blackhole::app::gui::save_scene(&scene, p).expect("saves");
+    blackhole::app::editors::save_scene(&scene, p).expect("saves");
     let mut back = blackhole::Scene::load(p).expect("loads");
     // Where it was read from is not part of the scene.
     assert_eq!(back.source.as_deref(), Some(path.as_path()));

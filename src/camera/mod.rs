@@ -44,7 +44,44 @@ impl Projection {
             Projection::Fisheye => "fisheye",
         }
     }
+
+    /// Its number on the GPU (`PROJ_*`, a specialisation constant of the
+    /// ray march).
+    pub fn gpu_id(self) -> u32 {
+        match self {
+            Projection::Pinhole => PROJ_PINHOLE,
+            Projection::Equirect => PROJ_EQUIRECT,
+            Projection::Fisheye => PROJ_FISHEYE,
+        }
+    }
+
+    /// Whether every pixel of the image has a ray (a fisheye's corners,
+    /// outside its circle, have none: black and transparent).
+    pub fn every_pixel_has_a_ray(self) -> bool {
+        self != Projection::Fisheye
+    }
+
+    /// The height of an image `width` wide that shows this projection whole
+    /// (with `stereo`): `view_height` for the pinhole (any shape), half the
+    /// width for a panorama (2:1), the width for a stereo pair of panoramas
+    /// or a dome.
+    pub fn natural_height(self, stereo: Stereo, width: u32, view_height: u32) -> u32 {
+        match (self, stereo) {
+            (Projection::Pinhole, _) => view_height,
+            (Projection::Equirect, Stereo::None) => (width / 2).max(1),
+            (Projection::Equirect, Stereo::Ods) | (Projection::Fisheye, _) => width,
+        }
+    }
 }
+
+/// The projections' numbers in the ray march (`shaders/include/camera.glsl`;
+/// tests/layout.rs checks them against the GLSL source).
+pub const PROJ_PINHOLE: u32 = 0;
+pub const PROJ_EQUIRECT: u32 = 1;
+pub const PROJ_FISHEYE: u32 = 2;
+/// The stereo layouts' numbers (the parameter block's `camera.stereo`).
+pub const STEREO_NONE: u32 = 0;
+pub const STEREO_ODS: u32 = 1;
 
 /// `[camera] stereo`: one image, or two eyes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, Serialize)]
@@ -56,6 +93,16 @@ pub enum Stereo {
     /// the top half, the right eye's in the bottom, each column's ray from
     /// its eye's place on a circle of diameter `ipd` around the camera.
     Ods = 1,
+}
+
+impl Stereo {
+    /// Its number on the GPU (`STEREO_*`).
+    pub fn gpu_id(self) -> u32 {
+        match self {
+            Stereo::None => STEREO_NONE,
+            Stereo::Ods => STEREO_ODS,
+        }
+    }
 }
 
 /// A pixel's ray.
@@ -227,6 +274,17 @@ pub fn halton(mut i: u32, base: u32) -> f64 {
         i /= base;
     }
     r
+}
+
+/// Sample `n`'s offset from the pixel's centre, in pixels (x right, y
+/// down): Halton's bases 2 and 3 centred on the pixel for n >= 1, the
+/// centre itself for n = 0. The window's progressive refinement and
+/// `--spp` take their samples from it.
+pub fn jitter(n: u32) -> (f64, f64) {
+    if n == 0 {
+        return (0.0, 0.0);
+    }
+    (halton(n, 2) - 0.5, halton(n, 3) - 0.5)
 }
 
 #[cfg(test)]

@@ -17,7 +17,6 @@ use std::sync::Arc;
 
 use ash::vk;
 
-pub use crate::camera::halton;
 pub use crate::features::{Features, RendererOptions};
 pub use pipelines::Pipelines;
 pub use recipe::{Accumulation, HdrSource, PostSettings, add_frame};
@@ -292,7 +291,7 @@ fn add_scene_frame<'a>(
         PostSettings {
             bloom: &scene.bloom,
             post: &scene.post,
-            mask: scene.camera.projection == crate::camera::Projection::Fisheye,
+            mask: !scene.camera.projection.every_pixel_has_a_ray(),
         },
         output,
         accumulation,

@@ -10,8 +10,7 @@ use gpu_allocator::MemoryLocation;
 use super::Pipelines;
 use super::resources::SceneResources;
 use super::{
-    Accumulation, HdrSource, PostSettings, Renderer, add_frame, add_scene_frame, halton,
-    import_mean, slots,
+    Accumulation, HdrSource, PostSettings, Renderer, add_frame, add_scene_frame, import_mean, slots,
 };
 use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
 use crate::graph::{Graph, ImageHandle};
@@ -124,10 +123,8 @@ impl Renderer {
             let scene = &owned;
             self.slots[OFFSCREEN_SLOT].wait()?;
             let build = std::time::Instant::now();
-            let jitter = (
-                (halton(i + 1, 2) - 0.5) as f32,
-                (halton(i + 1, 3) - 0.5) as f32,
-            );
+            let (jx, jy) = crate::camera::jitter(i + 1);
+            let jitter = (jx as f32, jy as f32);
             let spacetime = Spacetime::of(scene);
             self.write_params(OFFSCREEN_SLOT, (scene, &spacetime), (width, height), jitter)?;
             let mean = self

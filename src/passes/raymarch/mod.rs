@@ -54,11 +54,7 @@ pub mod glsl {
     pub const STAGE_ALL: u32 = 0;
     pub const STAGE_TRACE: u32 = 1;
     pub const STAGE_DEFERRED: u32 = 2;
-    pub const PROJ_PINHOLE: u32 = 0;
-    pub const PROJ_EQUIRECT: u32 = 1;
-    pub const PROJ_FISHEYE: u32 = 2;
-    pub const STEREO_NONE: u32 = 0;
-    pub const STEREO_ODS: u32 = 1;
+    pub use crate::camera::{PROJ_EQUIRECT, PROJ_FISHEYE, PROJ_PINHOLE, STEREO_NONE, STEREO_ODS};
     /// Workgroups (of 64 listed pixels) in one row of the disk pass's
     /// indirect dispatch.
     pub const DEFERRED_ROW: u32 = 256;
@@ -164,11 +160,7 @@ impl Variant {
             observer_moves: spacetime.camera_observer(scene).beta != glam::DVec3::ZERO,
             page_thorne: scene.disk.temperature_profile
                 == crate::scene::TemperatureProfile::PageThorne,
-            projection: match scene.camera.projection {
-                crate::camera::Projection::Pinhole => glsl::PROJ_PINHOLE,
-                crate::camera::Projection::Equirect => glsl::PROJ_EQUIRECT,
-                crate::camera::Projection::Fisheye => glsl::PROJ_FISHEYE,
-            },
+            projection: scene.camera.projection.gpu_id(),
         }
     }
 

@@ -296,10 +296,7 @@ fn camera(scene: &Scene, frame: &FrameSpec) -> CameraParams {
         size: [frame.width, frame.height],
         half_fov: f.half_fov as f32,
         ipd: f.ipd as f32,
-        stereo: match f.stereo {
-            crate::camera::Stereo::None => glsl::STEREO_NONE,
-            crate::camera::Stereo::Ods => glsl::STEREO_ODS,
-        } as f32,
+        stereo: f.stereo.gpu_id() as f32,
         _pad: [0.0; 3],
     }
 }
