@@ -9,7 +9,7 @@ pub enum OutputKind {
     Ldr,
     /// Linear HDR RGBA, before tone mapping.
     Hdr,
-    /// The geodesic AOV (the geodesic AOV table in the README), RGBA32F.
+    /// The geodesic AOV (docs/physics.md, "The geodesic AOV"), RGBA32F.
     Geodesic,
     /// Linear HDR after bloom and exposure, before the tone map (`--exr-post`).
     HdrPost,

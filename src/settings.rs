@@ -49,7 +49,7 @@ impl Default for Settings {
     }
 }
 
-/// Every variable read, with what it takes (for messages and the README).
+/// Every variable read, with what it takes (for messages and docs/environment.md).
 pub const KNOWN: &[(&str, &str)] = &[
     ("BLACKHOLE_DEVICE", "part of a device's name"),
     (

@@ -367,13 +367,13 @@ fn two_holes_follow_the_f64_reference() {
     );
 }
 
-/// The accuracy-versus-cost table of the README: the one-hole closed form,
+/// The accuracy-versus-cost table of docs/performance.md: the one-hole closed form,
 /// and the general integrator (the binary preset's two holes) at three
 /// tolerances, against the f64 reference. Run with
 /// `cargo test --release --test geodesic -- --ignored --nocapture`; the
 /// milliseconds come from `blackhole profile` on the same scenes.
 #[test]
-#[ignore = "the README's accuracy table: minutes on lavapipe, run by hand with --ignored"]
+#[ignore = "docs/performance.md's accuracy table: minutes on lavapipe, run by hand with --ignored"]
 fn accuracy_versus_quality() {
     let mut f = compare("default", [0.0, 0.8, -15.0], "");
     println!(

@@ -349,7 +349,7 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
     assert_eq!(define(volume, "VOLUME_NOISE_PERIOD_XZ"), period[0]);
     assert_eq!(define(volume, "VOLUME_NOISE_PERIOD_Y"), period[1]);
     assert_eq!(period[0], period[2], "the shader has one period across");
-    // The AOV's outcome codes are binding (the geodesic AOV table in the README).
+    // The AOV's outcome codes are binding (docs/physics.md, "The geodesic AOV").
     let hit = include_str!("../shaders/include/hit.glsl");
     for (name, code) in [
         ("OUT_ESCAPED", 0.0),

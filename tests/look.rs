@@ -1,6 +1,6 @@
 //! The look on lavapipe, validation required: the tone map keeps each
 //! pixel's hue and clips nothing, the `doppler` preset shows its colours
-//! (figures stated in the README), each physics switch changes the image,
+//! (figures stated in docs/physics.md), each physics switch changes the image,
 //! and the automatic exposure meters the light, not the black.
 
 use blackhole::scene::{Bloom, Post, Tonemap};
@@ -151,7 +151,7 @@ fn automatic_exposure_meters_the_lit_pixels() {
 }
 
 /// Disk pixels of a frame (from the geodesic AOV) and the figures the
-/// README states for the `doppler` preset: the share of disk pixels at 255
+/// docs/physics.md states for the `doppler` preset: the share of disk pixels at 255
 /// in any channel, and the mean blue share B / (R + G + B) of the right
 /// (approaching) and left halves.
 fn doppler_figures(r: &mut Renderer, scene: &Scene, w: u32, h: u32) -> (f64, f64, f64) {

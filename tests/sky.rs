@@ -151,7 +151,7 @@ fn a_missing_sky_file_is_named() {
 }
 
 /// World direction of galactic longitude `l` and latitude `b` (degrees) in
-/// the catalogue sky's galactic frame, not turned (README, "Scenes": the
+/// the catalogue sky's galactic frame, not turned (docs/scenes.md, "The real sky": the
 /// galactic centre along +z, the north galactic pole along +y, longitude
 /// growing to the left as seen from inside).
 fn galactic_world(l: f64, b: f64) -> [f64; 3] {
@@ -217,7 +217,7 @@ fn the_catalogue_sky_is_not_mirrored() {
     let look = galactic_world(213.230, -8.890);
     let (x, y) = brightest(look, vfov, w, h);
     let sirius = galactic_world(227.230, -8.890);
-    // The camera's frame (README, "Scenes"): right = up x forward.
+    // The camera's frame (docs/physics.md, the binding camera convention): right = up x forward.
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     let n = dot(look, look).sqrt();
     let fwd = look.map(|v| v / n);

@@ -29,7 +29,7 @@ pub struct Cli {
 pub enum Aov {
     /// The rendered image.
     Beauty,
-    /// The geodesic AOV (the geodesic AOV table in the README).
+    /// The geodesic AOV (docs/physics.md, "The geodesic AOV").
     Geodesic,
 }
 

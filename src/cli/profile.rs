@@ -89,7 +89,7 @@ pub struct PassReport {
     pub stats: Stats,
 }
 
-/// The whole report (the binding `--json` shape documented in the README,
+/// The whole report (the binding `--json` shape documented in docs/commands.md,
 /// with more fields).
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct Report {

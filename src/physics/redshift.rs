@@ -1,4 +1,4 @@
-//! Frequency shift of light from a thin Keplerian disk (the conventions in the README, "Physics").
+//! Frequency shift of light from a thin Keplerian disk (the conventions of docs/physics.md).
 
 /// Angular velocity of a circular Keplerian orbit at radius `r`: Ω = sqrt(M / r³),
 /// with M = rs / 2.

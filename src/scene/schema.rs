@@ -15,7 +15,7 @@ use serde::Deserialize;
 use super::animation::Animation;
 use crate::physics::observer::ObserverKind;
 
-/// Camera (the binding convention in the README): `position`, `look_at`, `up`, `vfov_deg`.
+/// Camera (the binding convention of docs/physics.md): `position`, `look_at`, `up`, `vfov_deg`.
 #[derive(Clone, Copy, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Camera {

@@ -2,7 +2,7 @@
 //! and writes linear HDR radiance (or the geodesic AOV). Which path it takes
 //! is a specialisation of the shader ([`Variant`]): one hole with gravity,
 //! the closed-form light path (shaders/include/lightpath.glsl, the
-//! conventions in the README, "Physics"); gravity off, a straight line;
+//! conventions of docs/physics.md); gravity off, a straight line;
 //! several holes, the spatial-orbit form x'' = -1.5 rs h^2 x / r^5 of the
 //! null geodesic equation (from Binet's equation u'' + u = 1.5 rs u^2)
 //! integrated in Cartesian coordinates with adaptive Dormand-Prince 5(4),
@@ -72,7 +72,7 @@ pub const AOV_FORMAT: vk::Format = vk::Format::R32G32B32A32_SFLOAT;
 pub enum RaymarchOutput {
     /// Linear HDR radiance.
     Beauty,
-    /// The geodesic AOV in the README.
+    /// The geodesic AOV (docs/physics.md).
     Geodesic,
 }
 
