@@ -31,6 +31,7 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
+#include "bindings.glsl"
 #include "color.glsl"
 #include "params.glsl"
 #include "variant.glsl"
@@ -42,14 +43,14 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 #ifdef GEODESIC_AOV
 // The geodesic AOV (docs/physics.md, "The geodesic AOV"): where each ray went.
-layout(binding = 0, rgba32f) uniform writeonly image2D out_img;
+layout(binding = RM_OUT_IMAGE, rgba32f) uniform writeonly image2D out_img;
 #else
 // Read back by the disk pass (the light behind the disk).
-layout(binding = 0, rgba16f) uniform image2D out_img;
+layout(binding = RM_OUT_IMAGE, rgba16f) uniform image2D out_img;
 #endif
 #ifdef SPLIT_PASSES
 // The deferred pass's work: pixels packed x | y << 16, and their count.
-layout(std430, binding = 6) buffer DeferredList {
+layout(std430, binding = RM_DEFERRED_LIST) buffer DeferredList {
     uint count;
     uint px[];
 } deferred_list;
@@ -58,7 +59,7 @@ layout(std430, binding = 6) buffer DeferredList {
 // a 4K frame can list more groups of 64 than that; short rows also make
 // every frame of 720p and up use several, so the tests see them).
 #define DEFERRED_ROW 256u
-layout(std430, binding = 7) buffer DeferredDispatch {
+layout(std430, binding = RM_DEFERRED_DISPATCH) buffer DeferredDispatch {
     uint groups_x;
     uint groups_y;
     uint groups_z;

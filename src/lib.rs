@@ -11,7 +11,6 @@
     unsafe_op_in_unsafe_fn,
     clippy::undocumented_unsafe_blocks
 )]
-#![allow(clippy::too_many_arguments)]
 
 pub mod app;
 pub mod camera;

@@ -47,8 +47,9 @@ fn member_offsets(spirv: &[u8], name: &str) -> Vec<u32> {
     m.into_iter().map(|(_, off)| off).collect()
 }
 
-/// Offsets of the struct `name` in every ray-march build against `rust`.
-fn raymarch_struct_matches(name: &str, rust: &[usize]) {
+/// Every build of the ray march: each metric's builds, the split for both
+/// closed forms, and the spinning hole's build with 32-bit roots.
+fn raymarch_modules() -> Vec<&'static [u8]> {
     use blackhole::shaders::{RaymarchBuild, raymarch};
     use blackhole::spacetime::GpuPath;
     let builds = [
@@ -67,7 +68,6 @@ fn raymarch_struct_matches(name: &str, rust: &[usize]) {
         .iter()
         .flat_map(|&p| builds.iter().filter_map(move |&b| raymarch(p, b, true)))
         .collect();
-    // The spinning hole's build with 32-bit roots.
     modules.extend(
         builds
             .iter()
@@ -78,6 +78,12 @@ fn raymarch_struct_matches(name: &str, rust: &[usize]) {
         18,
         "every metric's builds, the split for both closed forms"
     );
+    modules
+}
+
+/// Offsets of the struct `name` in every ray-march build against `rust`.
+fn raymarch_struct_matches(name: &str, rust: &[usize]) {
+    let modules = raymarch_modules();
     for spirv in modules {
         let glsl = member_offsets(spirv, name);
         let rust: Vec<u32> = rust.iter().map(|&o| o as u32).collect();
@@ -457,4 +463,116 @@ fn bloom_and_exposure_push_constants_match_the_glsl_blocks() {
             offset_of!(ExposurePush, key),
         ],
     );
+}
+
+/// Descriptor bindings of a SPIR-V module's set 0: (binding, kind), the kind
+/// read from the variable's type (a sampled image, a storage image, or a
+/// block in storage-buffer memory).
+fn spirv_bindings(spirv: &[u8]) -> Vec<(u32, blackhole::vk::BindingKind)> {
+    use blackhole::vk::BindingKind;
+    use std::collections::HashMap;
+    let words: Vec<u32> = spirv
+        .chunks_exact(4)
+        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+        .collect();
+    let mut binding = HashMap::new();
+    let (mut pointers, mut images, mut sampled, mut structs) =
+        (HashMap::new(), HashMap::new(), Vec::new(), Vec::new());
+    let mut variables = Vec::new();
+    let mut i = 5;
+    while i < words.len() {
+        let (count, opcode) = ((words[i] >> 16) as usize, words[i] & 0xffff);
+        let ops = &words[i + 1..i + count];
+        match opcode {
+            // OpDecorate target Binding(33) n.
+            71 if ops[1] == 33 => {
+                binding.insert(ops[0], ops[2]);
+            }
+            // OpTypeImage: result, sampled type, dim, depth, arrayed, MS, sampled (2: storage).
+            25 => {
+                images.insert(ops[0], ops[6]);
+            }
+            27 => sampled.push(ops[0]),
+            30 => structs.push(ops[0]),
+            // OpTypePointer: result, storage class, pointee.
+            32 => {
+                pointers.insert(ops[0], ops[2]);
+            }
+            // OpVariable: result type, result, storage class.
+            59 => variables.push((ops[1], ops[0])),
+            _ => {}
+        }
+        i += count.max(1);
+    }
+    let mut out: Vec<(u32, BindingKind)> = variables
+        .iter()
+        .filter_map(|(var, ty)| {
+            let n = *binding.get(var)?;
+            let pointee = *pointers.get(ty)?;
+            let kind = if sampled.contains(&pointee) {
+                BindingKind::SampledImage
+            } else if images.get(&pointee) == Some(&2) {
+                BindingKind::StorageImage
+            } else if structs.contains(&pointee) {
+                BindingKind::StorageBuffer
+            } else {
+                panic!("binding {n}: a type this test does not know")
+            };
+            Some((n, kind))
+        })
+        .collect();
+    out.sort_by_key(|b| b.0);
+    out
+}
+
+/// The ray march's bindings are declared once in GLSL
+/// (shaders/include/bindings.glsl) and once in Rust (`raymarch::BINDINGS`,
+/// which the passes walk and the pipelines take their layout from): the
+/// names and numbers agree, and every binding each SPIR-V module of the ray
+/// march uses has the kind the table says.
+#[test]
+fn the_ray_march_bindings_agree_in_glsl_rust_and_spirv() {
+    use blackhole::passes::raymarch::BINDINGS;
+    let glsl = include_str!("../shaders/include/bindings.glsl");
+    let numbered: Vec<(String, String)> = defines(glsl);
+    assert_eq!(numbered.len(), BINDINGS.len(), "one #define per binding");
+    for (i, b) in BINDINGS.iter().enumerate() {
+        assert_eq!(define(glsl, b.name), i as f64, "{}", b.name);
+    }
+    for spirv in raymarch_modules() {
+        let used = spirv_bindings(spirv);
+        assert!(
+            used.iter().any(|&(n, _)| n == 0),
+            "the output image is bound"
+        );
+        for (n, kind) in used {
+            let b = &BINDINGS[n as usize];
+            assert_eq!(kind, b.kind, "binding {n} ({})", b.name);
+        }
+    }
+}
+
+/// Every other compute shader's binding table matches its SPIR-V exactly.
+#[test]
+fn the_post_passes_bindings_match_their_spirv() {
+    use blackhole::passes::{accumulate, bloom, composite, exposure};
+    use blackhole::shaders as s;
+    let cases: [(&str, &[u8], &[blackhole::passes::compute::Binding]); 7] = [
+        ("bloom prefilter", s::BLOOM_PREFILTER, &bloom::BINDINGS),
+        ("bloom down", s::BLOOM_DOWN, &bloom::BINDINGS),
+        ("bloom up", s::BLOOM_UP, &bloom::BINDINGS),
+        ("exposure", s::EXPOSURE, &exposure::BINDINGS),
+        ("accumulate", s::ACCUMULATE, &accumulate::BINDINGS),
+        ("composite", s::COMPOSITE, &composite::BINDINGS),
+        ("composite hdr", s::COMPOSITE_HDR, &composite::BINDINGS),
+    ];
+    for (name, spirv, table) in cases {
+        let used = spirv_bindings(spirv);
+        let want: Vec<_> = table
+            .iter()
+            .enumerate()
+            .map(|(n, b)| (n as u32, b.kind))
+            .collect();
+        assert_eq!(used, want, "{name}");
+    }
 }

@@ -5,6 +5,7 @@
 #ifndef DISK_GLSL
 #define DISK_GLSL
 
+#include "bindings.glsl"
 #include "params.glsl"
 #include "variant.glsl"
 #include "blackbody.glsl"
@@ -27,7 +28,7 @@ float keplerian_omega(float rs, float r) {
 }
 
 // The thin disk's tileable noise (src/render/noise.rs, `disk_noise`).
-layout(binding = 4) uniform sampler2D disk_noise;
+layout(binding = RM_DISK_NOISE) uniform sampler2D disk_noise;
 
 // Light of the thin disk at radius r whose light reaches us shifted by g_full
 // (the conventions in the README, "Physics"): Novikov-Thorne temperature T(r), observed temperature

@@ -7,6 +7,8 @@
 #ifndef PARAMS_GLSL
 #define PARAMS_GLSL
 
+#include "bindings.glsl"
+
 #define MAX_HOLES 8
 
 // Disk kinds (disk.kind).
@@ -129,7 +131,7 @@ struct RaymarchParams {
     PlaneParams plane;
 };
 
-layout(std430, binding = 1) readonly buffer RaymarchParamsBlock {
+layout(std430, binding = RM_PARAMS) readonly buffer RaymarchParamsBlock {
     RaymarchParams params;
 } params_block;
 

@@ -3,13 +3,14 @@
 #ifndef SKY_GLSL
 #define SKY_GLSL
 
+#include "bindings.glsl"
 #include "params.glsl"
 #include "variant.glsl"
 #include "blackbody.glsl"
 
 // The image sky's panorama with mips, the catalogue's star grid with mips
 // (src/stars.rs), or the colour table, unused, for the other skies.
-layout(binding = 3) uniform sampler2D sky_tex;
+layout(binding = RM_SKY) uniform sampler2D sky_tex;
 
 // Steps of a star cell's packed light place along u (PLACE_STEPS in
 // src/stars.rs).

@@ -8,6 +8,7 @@
 #ifndef VOLUME_GLSL
 #define VOLUME_GLSL
 
+#include "bindings.glsl"
 #include "params.glsl"
 #include "variant.glsl"
 #include "ray_state.glsl"
@@ -15,7 +16,7 @@
 
 // The volumetric disk's noise volume, three octaves in r, g, b
 // (src/render/noise.rs, `volume_noise`).
-layout(binding = 5) uniform sampler3D volume_noise;
+layout(binding = RM_VOLUME_NOISE) uniform sampler3D volume_noise;
 
 // The noise volume's period in lattice units of its first octave
 // (VOLUME_NOISE_PERIOD in src/render/noise.rs, checked by tests/layout.rs).

@@ -8,10 +8,10 @@ use bytemuck::{Pod, Zeroable};
 
 use std::sync::Arc;
 
-use super::dispatch_2d;
+use super::compute::{self, Binding, ComputePass};
 use crate::Result;
-use crate::graph::{Graph, ImageHandle, Mips};
-use crate::vk::{Access, BindingKind, ComputePipeline, Descriptor, Gpu};
+use crate::graph::{Graph, ImageHandle};
+use crate::vk::{Access, ComputePipeline, Gpu};
 
 /// Format of the running mean (f32: thousands of samples without drift).
 pub const MEAN_FORMAT: ash::vk::Format = ash::vk::Format::R32G32B32A32_SFLOAT;
@@ -25,6 +25,12 @@ pub struct AccumulatePush {
     pub weight: f32,
 }
 
+/// `shaders/accumulate.comp`'s bindings: this frame's sample, the mean.
+pub const BINDINGS: [Binding; 2] = [
+    Binding::storage_image("sample_img"),
+    Binding::storage_image("mean_img"),
+];
+
 /// The accumulation's pipeline, owned by this pass.
 pub struct AccumulatePipeline(ComputePipeline);
 
@@ -34,7 +40,7 @@ impl AccumulatePipeline {
             gpu,
             "accumulate",
             crate::shaders::ACCUMULATE,
-            &[BindingKind::StorageImage, BindingKind::StorageImage],
+            &compute::kinds(&BINDINGS),
             std::mem::size_of::<AccumulatePush>() as u32,
         )?))
     }
@@ -61,20 +67,12 @@ pub fn add_accumulate<'a>(
         height,
         weight: 1.0 / (index as f32 + 1.0),
     };
-    let mut pass = graph.add_pass("accumulate");
-    let src = pass.read(sample, Access::ComputeStorageRead, Mips::ALL);
-    let dst = pass.write(mean, access, Mips::ALL);
-    pass.record(move |ctx| {
-        dispatch_2d(
-            ctx,
-            &pipeline.0,
-            &[
-                Descriptor::StorageImage(ctx.view(&src, 0)),
-                Descriptor::StorageImage(ctx.view(&dst, 0)),
-            ],
-            bytemuck::bytes_of(&push),
-            width,
-            height,
-        )
-    });
+    ComputePass::new(graph, "accumulate", &BINDINGS)
+        .storage_image_read(sample, 0)
+        .storage_image(mean, access, 0)
+        .dispatch(
+            move || Ok(&pipeline.0),
+            bytemuck::bytes_of(&push).to_vec(),
+            (width, height),
+        );
 }

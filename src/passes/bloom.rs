@@ -19,11 +19,11 @@ use bytemuck::{Pod, Zeroable};
 
 use std::sync::Arc;
 
-use super::dispatch_2d;
+use super::compute::{self, Binding, ComputePass};
 use crate::Result;
-use crate::graph::{Graph, ImageHandle, Mips};
+use crate::graph::{Graph, ImageHandle};
 use crate::scene::Bloom;
-use crate::vk::{Access, BindingKind, ComputePipeline, Descriptor, Gpu, Sampler};
+use crate::vk::{Access, ComputePipeline, Gpu, Sampler};
 
 /// Format of the bloom chain.
 pub const BLOOM_FORMAT: vk::Format = vk::Format::R16G16B16A16_SFLOAT;
@@ -55,6 +55,10 @@ pub struct BloomUpPush {
     pub radius: f32,
 }
 
+/// The bindings of all three of the chain's shaders: the level read, the
+/// level written.
+pub const BINDINGS: [Binding; 2] = [Binding::sampled("src"), Binding::storage_image("dst")];
+
 /// The chain's three pipelines and its sampler, owned by this pass.
 pub struct BloomPipelines {
     prefilter: ComputePipeline,
@@ -66,13 +70,7 @@ pub struct BloomPipelines {
 impl BloomPipelines {
     pub fn new(gpu: &Arc<Gpu>) -> Result<Self> {
         let stage = |name, spirv, push: usize| {
-            ComputePipeline::new(
-                gpu,
-                name,
-                spirv,
-                &[BindingKind::SampledImage, BindingKind::StorageImage],
-                push as u32,
-            )
+            ComputePipeline::new(gpu, name, spirv, &compute::kinds(&BINDINGS), push as u32)
         };
         Ok(BloomPipelines {
             prefilter: stage(
@@ -127,81 +125,57 @@ pub fn add_bloom<'a>(
     {
         let (w, h) = chain.desc.mip_extent(0);
         let texel = [1.0 / hdr.desc.width as f32, 1.0 / hdr.desc.height as f32];
-        let mut pass = graph.add_pass("bloom prefilter");
-        let src = pass.read(hdr, Access::ComputeSampledRead, Mips::ALL);
-        let dst = pass.write(&mut chain, Access::ComputeStorageWrite, Mips::one(0));
-        pass.record(move |ctx| {
-            let push = BloomPrefilterPush {
-                src_texel: texel,
-                dst_size: [w, h],
-                threshold,
-                knee,
-            };
-            dispatch_2d(
-                ctx,
-                &pipelines.prefilter,
-                &[
-                    Descriptor::SampledImage(ctx.full_view(&src), sampler),
-                    Descriptor::StorageImage(ctx.view(&dst, 0)),
-                ],
-                bytemuck::bytes_of(&push),
-                w,
-                h,
-            )
-        });
+        let push = BloomPrefilterPush {
+            src_texel: texel,
+            dst_size: [w, h],
+            threshold,
+            knee,
+        };
+        ComputePass::new(graph, "bloom prefilter", &BINDINGS)
+            .sampled(hdr, sampler)
+            .storage_image(&mut chain, Access::ComputeStorageWrite, 0)
+            .dispatch(
+                move || Ok(&pipelines.prefilter),
+                bytemuck::bytes_of(&push).to_vec(),
+                (w, h),
+            );
     }
 
     // Downsample chain: level n -> level n + 1.
     for n in 0..levels - 1 {
         let (sw, sh) = chain.desc.mip_extent(n);
         let (w, h) = chain.desc.mip_extent(n + 1);
-        let mut pass = graph.add_pass(&format!("bloom down {}", n + 1));
-        let src = pass.read(&chain, Access::ComputeSampledRead, Mips::one(n));
-        let dst = pass.write(&mut chain, Access::ComputeStorageWrite, Mips::one(n + 1));
-        pass.record(move |ctx| {
-            let push = BloomDownPush {
-                src_texel: [1.0 / sw as f32, 1.0 / sh as f32],
-                dst_size: [w, h],
-            };
-            dispatch_2d(
-                ctx,
-                &pipelines.down,
-                &[
-                    Descriptor::SampledImage(ctx.view(&src, n), sampler),
-                    Descriptor::StorageImage(ctx.view(&dst, n + 1)),
-                ],
-                bytemuck::bytes_of(&push),
-                w,
-                h,
-            )
-        });
+        let push = BloomDownPush {
+            src_texel: [1.0 / sw as f32, 1.0 / sh as f32],
+            dst_size: [w, h],
+        };
+        ComputePass::new(graph, &format!("bloom down {}", n + 1), &BINDINGS)
+            .sampled_mip(&chain, n, sampler)
+            .storage_image(&mut chain, Access::ComputeStorageWrite, n + 1)
+            .dispatch(
+                move || Ok(&pipelines.down),
+                bytemuck::bytes_of(&push).to_vec(),
+                (w, h),
+            );
     }
 
     // Upsample chain: level n + 1 tent-filtered and added into level n.
     for n in (0..levels - 1).rev() {
         let (sw, sh) = chain.desc.mip_extent(n + 1);
         let (w, h) = chain.desc.mip_extent(n);
-        let mut pass = graph.add_pass(&format!("bloom up {n}"));
-        let src = pass.read(&chain, Access::ComputeSampledRead, Mips::one(n + 1));
-        let dst = pass.write(&mut chain, Access::ComputeStorageReadWrite, Mips::one(n));
-        pass.record(move |ctx| {
-            let push = BloomUpPush {
-                src_texel: [1.0 / sw as f32, 1.0 / sh as f32],
-                dst_size: [w, h],
-                radius,
-            };
-            dispatch_2d(
-                ctx,
-                &pipelines.up,
-                &[
-                    Descriptor::SampledImage(ctx.view(&src, n + 1), sampler),
-                    Descriptor::StorageImage(ctx.view(&dst, n)),
-                ],
-                bytemuck::bytes_of(&push),
-                w,
-                h,
-            )
-        });
+        let push = BloomUpPush {
+            src_texel: [1.0 / sw as f32, 1.0 / sh as f32],
+            dst_size: [w, h],
+            radius,
+        };
+        ComputePass::new(graph, &format!("bloom up {n}"), &BINDINGS)
+            .sampled_mip(&chain, n + 1, sampler)
+            .storage_image(&mut chain, Access::ComputeStorageReadWrite, n)
+            .dispatch(
+                move || Ok(&pipelines.up),
+                bytemuck::bytes_of(&push).to_vec(),
+                (w, h),
+            );
     }
     Some(chain)
 }

@@ -8,11 +8,12 @@ use bytemuck::{Pod, Zeroable};
 
 use std::sync::Arc;
 
-use super::{VariantCache, dispatch_2d};
+use super::VariantCache;
+use super::compute::{self, Binding, ComputePass};
 use crate::Result;
-use crate::graph::{BufferHandle, Graph, ImageDesc, ImageHandle, Mips};
+use crate::graph::{BufferHandle, Graph, ImageDesc, ImageHandle};
 use crate::scene::{Bloom, Post, Tonemap};
-use crate::vk::{Access, BindingKind, Buffer, ComputePipeline, Descriptor, Gpu, Sampler};
+use crate::vk::{Access, Buffer, ComputePipeline, Gpu, Sampler};
 
 /// 8-bit output format (sRGB-encoded values in a UNORM image: storage images
 /// cannot be SRGB).
@@ -92,6 +93,33 @@ impl Variant {
     }
 }
 
+/// What the composite makes: the 8-bit image the tone map ends in, or the
+/// linear HDR image with bloom and exposure only (`--exr-post`: no tone
+/// map, no dither).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CompositeOutput {
+    Ldr,
+    LinearHdr,
+}
+
+/// How the composite makes it.
+pub struct CompositeOptions<'s> {
+    pub bloom: &'s Bloom,
+    pub post: &'s Post,
+    pub output: CompositeOutput,
+    /// Pixels the ray march left transparent have no ray (a fisheye's
+    /// corners): keep them black and transparent.
+    pub mask_no_ray: bool,
+}
+
+/// `shaders/composite.comp`'s bindings (both builds).
+pub const BINDINGS: [Binding; 4] = [
+    Binding::sampled("hdr"),
+    Binding::storage_image("ldr"),
+    Binding::sampled("bloom"),
+    Binding::storage_buffer("Metered"),
+];
+
 /// The composite's inputs besides the HDR image.
 pub struct CompositeInputs<'h> {
     /// Level 0 of the bloom chain, if bloom is on.
@@ -129,17 +157,11 @@ impl CompositePipelines {
             } else {
                 crate::shaders::COMPOSITE
             };
-            let bindings = [
-                BindingKind::SampledImage,
-                BindingKind::StorageImage,
-                BindingKind::SampledImage,
-                BindingKind::StorageBuffer,
-            ];
             ComputePipeline::with_constants(
                 &self.gpu,
                 &format!("{variant:?}"),
                 spirv,
-                &bindings,
+                &compute::kinds(&BINDINGS),
                 std::mem::size_of::<CompositePush>() as u32,
                 &variant.constants(),
             )
@@ -149,20 +171,23 @@ impl CompositePipelines {
 
 /// Adds the composite of `hdr` (plus `bloom`, level 0, if given) at the
 /// graph's output size (upscaling `hdr` bilinearly if it is smaller); returns
-/// the 8-bit image, or with `linear` the bloomed, exposed linear HDR image (no
-/// tone map, no dither).
+/// the image `options.output` asks for.
 pub fn add_composite<'a>(
     graph: &mut Graph<'a>,
     pipelines: &'a CompositePipelines,
     hdr: &ImageHandle,
     inputs: CompositeInputs<'_>,
-    bloom_settings: &Bloom,
-    post: &Post,
-    linear: bool,
-    mask: bool,
+    options: CompositeOptions<'_>,
 ) -> ImageHandle {
     let (width, height) = graph.output_size();
     let CompositeInputs { bloom, exposure } = inputs;
+    let CompositeOptions {
+        bloom: bloom_settings,
+        post,
+        output,
+        mask_no_ray: mask,
+    } = options;
+    let linear = output == CompositeOutput::LinearHdr;
     let (name, format) = if linear {
         ("post hdr", HDR_POST_FORMAT)
     } else {
@@ -208,37 +233,25 @@ pub fn add_composite<'a>(
         dither: if post.dither { 1.0 } else { 0.0 },
         saturation: post.saturation as f32,
     };
-    let mut pass = graph.add_pass("composite");
-    let input = pass.read(hdr, Access::ComputeSampledRead, Mips::ALL);
-    let blur = bloom.map(|b| pass.read(b, Access::ComputeSampledRead, Mips::one(0)));
-    let metered = exposure.map(|e| pass.read_buffer(e, Access::ComputeStorageRead));
-    let output = pass.write(&mut ldr, Access::ComputeStorageWrite, Mips::ALL);
-    pass.record(move |ctx| {
-        let sampler = pipelines.sampler.sampler;
-        // Without bloom the binding still needs an image; the shader skips it.
-        let bloom_view = match &blur {
-            Some(b) => ctx.view(b, 0),
-            None => ctx.full_view(&input),
-        };
-        // Without automatic exposure the shader never reads it.
-        let metered_buffer = match &metered {
-            Some(e) => ctx.buffer(e),
-            None => pipelines.placeholder.buffer,
-        };
-        let pipeline = pipelines.pipeline(variant)?;
-        dispatch_2d(
-            ctx,
-            &pipeline,
-            &[
-                Descriptor::SampledImage(ctx.full_view(&input), sampler),
-                Descriptor::StorageImage(ctx.view(&output, 0)),
-                Descriptor::SampledImage(bloom_view, sampler),
-                Descriptor::StorageBuffer(metered_buffer),
-            ],
-            bytemuck::bytes_of(&push),
-            groups_w,
-            groups_h,
-        )
-    });
+    let sampler = pipelines.sampler.sampler;
+    // Without bloom the binding still needs an image (the HDR input; the
+    // shader skips it); without automatic exposure the shader never reads
+    // its buffer.
+    let pass = ComputePass::new(graph, "composite", &BINDINGS)
+        .sampled(hdr, sampler)
+        .storage_image(&mut ldr, Access::ComputeStorageWrite, 0);
+    let pass = match bloom {
+        Some(b) => pass.sampled_mip(b, 0, sampler),
+        None => pass.sampled(hdr, sampler),
+    };
+    let pass = match exposure {
+        Some(e) => pass.buffer_read(e, Access::ComputeStorageRead),
+        None => pass.absent_buffer(pipelines.placeholder.buffer),
+    };
+    pass.dispatch(
+        move || pipelines.pipeline(variant),
+        bytemuck::bytes_of(&push).to_vec(),
+        (groups_w, groups_h),
+    );
     ldr
 }

@@ -9,11 +9,11 @@ use bytemuck::{Pod, Zeroable};
 
 use std::sync::Arc;
 
-use super::dispatch_2d;
+use super::compute::{self, Binding, ComputePass};
 use crate::Result;
-use crate::graph::{BufferHandle, Graph, ImageHandle, Mips};
+use crate::graph::{BufferHandle, Graph, ImageHandle};
 use crate::scene::Post;
-use crate::vk::{Access, BindingKind, ComputePipeline, Descriptor, Gpu, Sampler};
+use crate::vk::{Access, ComputePipeline, Gpu, Sampler};
 
 /// The luminance the metered band's mean is brought to: the band is
 /// weighted toward the bright pixels, so this sits above mid grey (0.18).
@@ -29,6 +29,9 @@ pub struct ExposurePush {
     pub key: f32,
 }
 
+/// `shaders/exposure.comp`'s bindings: the HDR image, the metered result.
+pub const BINDINGS: [Binding; 2] = [Binding::sampled("hdr"), Binding::storage_buffer("Result")];
+
 /// The metering's pipeline and sampler, owned by this pass.
 pub struct ExposurePipeline {
     pipeline: ComputePipeline,
@@ -42,7 +45,7 @@ impl ExposurePipeline {
                 gpu,
                 "exposure",
                 crate::shaders::EXPOSURE,
-                &[BindingKind::SampledImage, BindingKind::StorageBuffer],
+                &compute::kinds(&BINDINGS),
                 std::mem::size_of::<ExposurePush>() as u32,
             )?,
             sampler: Sampler::linear_clamp(gpu)?,
@@ -68,22 +71,14 @@ pub fn add_exposure<'a>(
         high: post.meter_high as f32,
         key: KEY,
     };
-    let mut pass = graph.add_pass("exposure");
-    let input = pass.read(hdr, Access::ComputeSampledRead, Mips::ALL);
-    let output = pass.write_buffer(&mut exposure, Access::ComputeStorageWrite);
-    pass.record(move |ctx| {
-        // One workgroup (256 invocations) meters the whole image.
-        dispatch_2d(
-            ctx,
-            &pipeline.pipeline,
-            &[
-                Descriptor::SampledImage(ctx.full_view(&input), pipeline.sampler.sampler),
-                Descriptor::StorageBuffer(ctx.buffer(&output)),
-            ],
-            bytemuck::bytes_of(&push),
-            1,
-            1,
-        )
-    });
+    // One workgroup (256 invocations) meters the whole image.
+    ComputePass::new(graph, "exposure", &BINDINGS)
+        .sampled(hdr, pipeline.sampler.sampler)
+        .buffer_write(&mut exposure, Access::ComputeStorageWrite)
+        .dispatch(
+            move || Ok(&pipeline.pipeline),
+            bytemuck::bytes_of(&push).to_vec(),
+            (1, 1),
+        );
     Some(exposure)
 }

@@ -7,6 +7,7 @@
 pub mod accumulate;
 pub mod bloom;
 pub mod composite;
+pub mod compute;
 pub mod copy;
 pub mod exposure;
 pub mod present;

@@ -264,18 +264,36 @@ fn import_mean(
     )
 }
 
+/// One frame of a scene as the renderer's three paths (a still, a sample of
+/// `--spp`, the window) hand it to the recipe.
+struct SceneFrame<'s> {
+    scene: &'s Scene,
+    /// The scene's spacetime, built once for the frame.
+    spacetime: &'s Spacetime,
+    /// The slot's parameter block, written by the host.
+    params: BufferBinding,
+    /// The ray march's size.
+    size: (u32, u32),
+    output: OutputKind,
+    accumulation: Option<Accumulation>,
+}
+
 /// Imports a slot's parameter block (written by the host) and the shared
-/// images, then adds the recipe for `scene`'s ray march at `size`.
+/// images, then adds the recipe for the frame's ray march.
 fn add_scene_frame<'a>(
     g: &mut Graph<'a>,
     pipelines: &'a Pipelines,
     resources: &SceneResources,
-    (scene, spacetime): (&Scene, &Spacetime),
-    params: BufferBinding,
-    size: (u32, u32),
-    output: OutputKind,
-    accumulation: Option<Accumulation>,
+    frame: SceneFrame<'_>,
 ) -> ImageHandle {
+    let SceneFrame {
+        scene,
+        spacetime,
+        params,
+        size,
+        output,
+        accumulation,
+    } = frame;
     let params = g.import_buffer("raymarch params", params, Access::HostWrite, None);
     let images = import_scene_images(g, resources);
     add_frame(

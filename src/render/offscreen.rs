@@ -10,7 +10,8 @@ use gpu_allocator::MemoryLocation;
 use super::Pipelines;
 use super::resources::SceneResources;
 use super::{
-    Accumulation, HdrSource, PostSettings, Renderer, add_frame, add_scene_frame, import_mean, slots,
+    Accumulation, HdrSource, PostSettings, Renderer, SceneFrame, add_frame, add_scene_frame,
+    import_mean, slots,
 };
 use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
 use crate::graph::{Graph, ImageHandle};
@@ -51,16 +52,15 @@ impl Renderer {
             kind,
             build,
             |g, pipelines, resources, params| {
-                add_scene_frame(
-                    g,
-                    pipelines,
-                    resources,
-                    (scene, &spacetime),
+                let frame = SceneFrame {
+                    scene,
+                    spacetime: &spacetime,
                     params,
-                    (width, height),
-                    kind,
-                    None,
-                )
+                    size: (width, height),
+                    output: kind,
+                    accumulation: None,
+                };
+                add_scene_frame(g, pipelines, resources, frame)
             },
         )
     }
@@ -314,19 +314,18 @@ impl Sample<'_> {
         output: OutputKind,
     ) -> ImageHandle {
         let mean = import_mean(g, self.mean);
-        add_scene_frame(
-            g,
-            pipelines,
-            resources,
-            (self.scene, self.spacetime),
+        let frame = SceneFrame {
+            scene: self.scene,
+            spacetime: self.spacetime,
             params,
-            self.size,
+            size: self.size,
             output,
-            Some(Accumulation {
+            accumulation: Some(Accumulation {
                 mean,
                 index: self.index,
             }),
-        )
+        };
+        add_scene_frame(g, pipelines, resources, frame)
     }
 }
 

@@ -113,9 +113,15 @@ pub fn add_frame<'a>(
             bloom: bloom.as_ref(),
             exposure: exposure.as_ref(),
         },
-        settings.bloom,
-        settings.post,
-        output == OutputKind::HdrPost,
-        settings.mask,
+        composite::CompositeOptions {
+            bloom: settings.bloom,
+            post: settings.post,
+            output: if output == OutputKind::HdrPost {
+                composite::CompositeOutput::LinearHdr
+            } else {
+                composite::CompositeOutput::Ldr
+            },
+            mask_no_ray: settings.mask,
+        },
     )
 }

@@ -4,7 +4,7 @@
 
 use ash::vk;
 
-use super::{Accumulation, Renderer, add_scene_frame, import_mean};
+use super::{Accumulation, Renderer, SceneFrame, add_scene_frame, import_mean};
 use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
 use crate::graph::{Graph, ImageHandle};
 use crate::passes::{self, copy};
@@ -101,16 +101,15 @@ impl Renderer {
             (Some(mean), Some(index)) => Some(Accumulation { mean, index }),
             _ => None,
         };
-        let ldr = add_scene_frame(
-            &mut g,
-            &self.pipelines,
-            &self.resources,
-            (scene, &spacetime),
-            self.slots[slot_index].params.binding(),
-            (w, h),
-            OutputKind::Ldr,
+        let frame = SceneFrame {
+            scene,
+            spacetime: &spacetime,
+            params: self.slots[slot_index].params.binding(),
+            size: (w, h),
+            output: OutputKind::Ldr,
             accumulation,
-        );
+        };
+        let ldr = add_scene_frame(&mut g, &self.pipelines, &self.resources, frame);
         let mut swap = g.import_image(
             "swapchain",
             target.desc,

@@ -29,15 +29,16 @@ use params::{disk_kind, sky_kind};
 
 use std::sync::Arc;
 
-use super::{VariantCache, dispatch_2d, dispatch_indirect};
+use super::VariantCache;
+use super::compute::{self, Binding, ComputePass};
 use crate::Result;
 use crate::deferred;
 use crate::features::Features;
-use crate::graph::{BufferHandle, Graph, ImageDesc, ImageHandle, Mips};
+use crate::graph::{BufferHandle, Graph, ImageDesc, ImageHandle};
 use crate::scene::{Scene, VolumeColor};
 use crate::shaders::{self, RaymarchBuild};
 use crate::spacetime::{GpuPath, Spacetime};
-use crate::vk::{Access, BindingKind, Buffer, ComputePipeline, Descriptor, Gpu, Sampler};
+use crate::vk::{Access, Buffer, ComputePipeline, Gpu, Sampler};
 
 /// Constants mirrored from `shaders/include/params.glsl` (tests/layout.rs
 /// checks them against the GLSL source).
@@ -234,17 +235,19 @@ impl Variant {
 /// leaked about 0.55 MB inside the driver until the device was destroyed
 /// (1,000 frames at 160x90 took 640 MB; the same with a storage buffer, 120
 /// MB) and cost twice the time. Found by skipping one pass's dispatch at a
-/// time. Bindings 6 and 7 are the split thin-disk ray march's work list and
-/// indirect dispatch.
-const RAYMARCH_BINDINGS: [BindingKind; 8] = [
-    BindingKind::StorageImage,
-    BindingKind::StorageBuffer,
-    BindingKind::SampledImage,
-    BindingKind::SampledImage,
-    BindingKind::SampledImage,
-    BindingKind::SampledImage,
-    BindingKind::StorageBuffer,
-    BindingKind::StorageBuffer,
+/// time. Bindings 6 and 7 are the split ray march's work list and indirect
+/// dispatch. The ray march's bindings, in order (the names and numbers of
+/// shaders/include/bindings.glsl; tests/layout.rs checks them against it
+/// and the SPIR-V).
+pub const BINDINGS: [Binding; 8] = [
+    Binding::storage_image("RM_OUT_IMAGE"),
+    Binding::storage_buffer("RM_PARAMS"),
+    Binding::sampled("RM_DISK_LUT"),
+    Binding::sampled("RM_SKY"),
+    Binding::sampled("RM_DISK_NOISE"),
+    Binding::sampled("RM_VOLUME_NOISE"),
+    Binding::storage_buffer("RM_DEFERRED_LIST"),
+    Binding::storage_buffer("RM_DEFERRED_DISPATCH"),
 ];
 
 /// The ray march's pipelines by variant (built the first time a scene needs
@@ -303,7 +306,7 @@ impl RaymarchPipelines {
                 &self.gpu,
                 &variant.name(),
                 spirv,
-                &RAYMARCH_BINDINGS,
+                &compute::kinds(&BINDINGS),
                 0,
                 &variant.constants(),
             )
@@ -437,66 +440,43 @@ fn add_stage<'a>(
     stage: Stage<'_>,
 ) {
     let (width, height) = (hdr.desc.width, hdr.desc.height);
-    let indirect = matches!(stage, Stage::Deferred(_));
-    let mut pass = graph.add_pass(if indirect {
-        deferred_pass_name(variant.path)
-    } else {
-        TRACE_PASS
-    });
-    let sampled = Access::ComputeSampledRead;
-    let block = pass.read_buffer(params, Access::ComputeStorageRead);
-    let lut = pass.read(&images.disk_lut, sampled, Mips::ALL);
-    let noise = pass.read(&images.disk_noise, sampled, Mips::ALL);
-    let volume = pass.read(&images.volume_noise, sampled, Mips::ALL);
+    let name = match stage {
+        Stage::Deferred(_) => deferred_pass_name(variant.path),
+        _ => TRACE_PASS,
+    };
+    let hdr_access = match stage {
+        Stage::Deferred(_) => Access::ComputeStorageReadWrite,
+        _ => Access::ComputeStorageWrite,
+    };
+    let repeat = pipelines.repeat_sampler.sampler;
     // Without an image sky the binding holds the colour table (never sampled).
-    let sky = match &images.sky {
-        Some(sky) => pass.read(sky, sampled, Mips::ALL),
-        None => lut,
-    };
-    let (work, hdr_access) = match stage {
-        Stage::Whole => (None, Access::ComputeStorageWrite),
-        Stage::Trace(w) => (
-            Some((
-                pass.write_buffer(&mut w.list, Access::ComputeStorageReadWrite),
-                pass.write_buffer(&mut w.dispatch, Access::ComputeStorageReadWrite),
-            )),
-            Access::ComputeStorageWrite,
-        ),
-        Stage::Deferred(w) => (
-            Some((
-                pass.read_buffer(&w.list, Access::ComputeStorageRead),
-                pass.read_buffer(&w.dispatch, Access::IndirectRead),
-            )),
-            Access::ComputeStorageReadWrite,
-        ),
-    };
-    let out = pass.write(hdr, hdr_access, Mips::ALL);
-    pass.record(move |ctx| {
-        // Built on first use (Renderer::prepare_scene builds it ahead).
-        let pipeline = pipelines.pipeline(variant)?;
-        let repeat = pipelines.repeat_sampler.sampler;
+    let pass = ComputePass::new(graph, name, &BINDINGS)
+        .storage_image(hdr, hdr_access, 0)
+        .buffer_read(params, Access::ComputeStorageRead)
+        .sampled(&images.disk_lut, pipelines.linear_clamp.sampler)
+        .sampled(
+            images.sky.as_ref().unwrap_or(&images.disk_lut),
+            pipelines.sky_sampler.sampler,
+        )
+        .sampled(&images.disk_noise, repeat)
+        .sampled(&images.volume_noise, repeat);
+    // Built on first use (Renderer::prepare_scene builds it ahead).
+    let pipeline = move || pipelines.pipeline(variant);
+    match stage {
         // Without the split its buffers are never read.
-        let (list, dispatch) = match &work {
-            Some((l, d)) => (ctx.buffer(l), ctx.buffer(d)),
-            None => {
-                let placeholder = pipelines.placeholder.buffer;
-                (placeholder, placeholder)
-            }
-        };
-        let descriptors = [
-            Descriptor::StorageImage(ctx.view(&out, 0)),
-            Descriptor::StorageBuffer(ctx.buffer(&block)),
-            Descriptor::SampledImage(ctx.full_view(&lut), pipelines.linear_clamp.sampler),
-            Descriptor::SampledImage(ctx.full_view(&sky), pipelines.sky_sampler.sampler),
-            Descriptor::SampledImage(ctx.full_view(&noise), repeat),
-            Descriptor::SampledImage(ctx.full_view(&volume), repeat),
-            Descriptor::StorageBuffer(list),
-            Descriptor::StorageBuffer(dispatch),
-        ];
-        if indirect {
-            dispatch_indirect(ctx, &pipeline, &descriptors, dispatch)
-        } else {
-            dispatch_2d(ctx, &pipeline, &descriptors, &[], width, height)
+        Stage::Whole => {
+            let placeholder = pipelines.placeholder.buffer;
+            pass.absent_buffer(placeholder)
+                .absent_buffer(placeholder)
+                .dispatch(pipeline, Vec::new(), (width, height));
         }
-    });
+        Stage::Trace(w) => pass
+            .buffer_write(&mut w.list, Access::ComputeStorageReadWrite)
+            .buffer_write(&mut w.dispatch, Access::ComputeStorageReadWrite)
+            .dispatch(pipeline, Vec::new(), (width, height)),
+        Stage::Deferred(w) => pass
+            .buffer_read(&w.list, Access::ComputeStorageRead)
+            .buffer_read(&w.dispatch, Access::IndirectRead)
+            .dispatch_indirect(pipeline, "RM_DEFERRED_DISPATCH"),
+    }
 }
