@@ -131,12 +131,6 @@ pub fn ray_march_passes(
     r.ray_march_passes(scene, width, height)
 }
 
-/// Prints why a test checked nothing on this device (a capability it
-/// lacks or a switch that turned it off); the test then returns.
-pub fn skipped(test: &str, why: &str) {
-    println!("SKIPPED {test}: {why}");
-}
-
 /// The 8-bit pixels of a frame (panics on a float frame).
 pub fn rgba8(f: blackhole::Frame) -> Vec<u8> {
     match f.pixels {
