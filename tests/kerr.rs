@@ -33,9 +33,9 @@ fn angle(a: DVec3, b: DVec3) -> f64 {
 }
 
 /// The disk of the reference rays: the prograde ISCO to 12 rs.
-fn isco_disk(astar: f64) -> KerrDisk {
+fn isco_disk(spin: f64) -> KerrDisk {
     KerrDisk {
-        inner: r_isco(astar) / 2.0,
+        inner: r_isco(spin) / 2.0,
         outer: 12.0,
     }
 }

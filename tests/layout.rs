@@ -171,7 +171,7 @@ fn raymarch_params_match_the_glsl_block() {
             offset_of!(DiskParams, opacity),
             offset_of!(DiskParams, speed),
             offset_of!(DiskParams, profile),
-            offset_of!(DiskParams, spin),
+            offset_of!(DiskParams, _pad),
             offset_of!(DiskParams, pt_roots),
             offset_of!(DiskParams, pt_coef),
         ],

@@ -44,25 +44,17 @@ float page_thorne(float r, float rs) {
     float x = sqrt(2.0 * r / rs);
     vec4 q = P.disk.pt_roots, c = P.disk.pt_coef;
     if (x <= q.x) return 0.0;
-    float a = P.disk.spin;
+    float a = P.metric.spin_hi;  // (the spacetime's: 0 unless the hole spins)
     float br = x - q.x - c.w * log(x / q.x) - c.x * log((x - q.y) / (q.x - q.y))
              - c.y * log((x - q.z) / (q.x - q.z)) - c.z * log((x - q.w) / (q.x - q.w));
     float f = 1.5 / (x * x * (x * x * x - 3.0 * x + 2.0 * a)) * br;
     return max(f / (x * x), 0.0);
 }
 
-// The square of the emitter's lapse at radius r (rs), its clock against
-// infinity: 1 - rs / r around a hole that does not spin; around a spinning
-// one the lapse alpha of the ZAMO on the disk plane, alpha^2 = r^2 Delta / A
-// (Boyer-Lindquist r, M = 1), whose limit at a* = 0 is the same.
-float disk_lapse2(float r, float rs, float ir) {
-    float a = P.disk.spin;
-    if (a == 0.0) return 1.0 - rs * ir;
-    float x = 2.0 * r / rs;
-    float delta = x * x - 2.0 * x + a * a;
-    float sum = x * x + a * a;
-    return x * x * delta / (sum * sum - a * a * delta);
-}
+// The square of the emitter's lapse at radius r (rs; ir = 1 / r), its
+// clock against infinity: each metric's (metric.glsl), defined after this
+// file by the metric file that includes it.
+float metric_emitter_lapse2(float r, float rs, float ir);
 
 vec3 disk_color(float r, float g_full) {
     float rs = P.metric.holes[0].w;
@@ -74,7 +66,7 @@ vec3 disk_color(float r, float g_full) {
     float t_rel = sqrt(sqrt(f * (1.0 / P.disk.nt_peak)));   // T / T_peak
     // The gravitational part as this observer measures it: emitter's clock
     // against the camera's.
-    float lapse2 = max(disk_lapse2(r, rs, ir), 1e-6), inv_lapse = inversesqrt(lapse2);
+    float lapse2 = max(metric_emitter_lapse2(r, rs, ir), 1e-6), inv_lapse = inversesqrt(lapse2);
     float g_grav = lapse2 * inv_lapse * (1.0 / observer_lapse);
     bool doppler = P.disk.doppler > 0.5, redshift = P.disk.redshift > 0.5, beaming = P.disk.beaming > 0.5;
     float g_kin = g_full * inv_lapse * observer_lapse;

@@ -20,7 +20,10 @@
 //       world point p (a spinning hole's Boyer-Lindquist r);
 //   float metric_gas_g(float r, float lambda)  the shift, as the camera
 //       sees it, of the volumetric gas's Keplerian orbit at radius r toward
-//       a photon of angular momentum lambda (volume.glsl declares it).
+//       a photon of angular momentum lambda (volume.glsl declares it);
+//   float metric_emitter_lapse2(float r, float rs, float ir)  the square of
+//       a disk emitter's lapse at radius r, its clock against infinity
+//       (disk.glsl declares it: the colour's switches split g by it).
 //
 // The disk, the volumetric gas and the sky take what metric_trace returns
 // and know nothing of orbit planes.

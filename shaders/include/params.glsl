@@ -88,7 +88,7 @@ struct DiskParams {
     float opacity;                       // thin: opacity at average density
     float speed;                         // x Keplerian
     float profile;                       // 0 Newtonian, 1 Page-Thorne (the constants below)
-    float spin;                          // the hole's spin a* (Page-Thorne, the emitter's lapse)
+    float pad;                           // (the spin travels in metric: spin_hi, spin_lo)
     vec4 pt_roots;                       // Page-Thorne: sqrt(ISCO / M), the roots of x^3 - 3x + 2a
     vec4 pt_coef;                        // Page-Thorne: the roots' log coefficients, 1.5 a
 };

@@ -142,4 +142,24 @@ mod tests {
         let c = f.ray_dir(1, 0, 3, 1).expect("a pinhole ray");
         assert!((c - f.forward).length() < 1e-12);
     }
+
+    /// The volumetric disk's inner edge is held outside the photon orbit of
+    /// the scene's own hole: 1.5 rs without spin, the prograde orbit (0.78
+    /// rs at a* = 0.9) around a spinning one.
+    #[test]
+    fn a_volumetric_disk_may_reach_a_spinning_holes_photon_orbit() {
+        let scene = |spin: f64, inner: f64| {
+            Scene::from_toml(
+                &format!(
+                    "[[black_hole]]\nspin = {spin}\n[disk]\nkind = \"volumetric\"\ninner_radius = {inner}\n"
+                ),
+                "t.toml",
+            )
+        };
+        let e = scene(0.0, 1.2).unwrap_err().to_string();
+        assert!(e.contains("1.5 rs = 1.5"), "{e}");
+        assert!(scene(0.9, 1.2).is_ok());
+        let e = scene(0.9, 0.7).unwrap_err().to_string();
+        assert!(e.contains("prograde photon orbit, 0.7"), "{e}");
+    }
 }

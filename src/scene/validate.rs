@@ -238,18 +238,26 @@ impl Scene {
         }
         finite(&key("speed"), d.speed)?;
         count_in(&key("noise_octaves"), d.noise_octaves, 1, 8)?;
-        let photon_sphere = match self.black_holes.first() {
-            Some(h) if self.physics.gravity => 1.5 * h.rs,
-            _ => 0.0,
+        // The photon orbit of the spacetime's hole (1.5 rs; a spinning
+        // hole's prograde one; none with gravity off).
+        let spacetime = Spacetime::of(self);
+        let photon = spacetime
+            .holes()
+            .first()
+            .and_then(|h| spacetime.photon_orbit(h))
+            .unwrap_or(0.0);
+        let bound = if spacetime.spin() == 0.0 {
+            format!("1.5 rs = {photon}")
+        } else {
+            format!("the prograde photon orbit, {photon:.4} rs")
         };
         rule(
-            d.kind != DiskKind::Volumetric
-                || (d.inner_radius > 0.0 && d.inner_radius >= photon_sphere),
+            d.kind != DiskKind::Volumetric || (d.inner_radius > 0.0 && d.inner_radius >= photon),
             &key("inner_radius"),
             d.inner_radius,
             format!(
-                "must be > 0 and outside the photon sphere (>= 1.5 rs = {photon_sphere}) for a \
-                 volumetric disk, whose gas is sampled along paths that leave it"
+                "must be > 0 and outside the photon sphere (>= {bound}) for a volumetric \
+                 disk, whose gas is sampled along paths that leave it"
             ),
         )
     }

@@ -70,6 +70,16 @@ impl Spacetime {
         }
     }
 
+    /// The spin a* of the spacetime's hole: a spinning hole's, else 0 (with
+    /// gravity off too: then no hole spins, and the disk is a non-rotating
+    /// hole's). The GPU block carries it once, in its metric part.
+    pub fn spin(&self) -> f64 {
+        match self {
+            Spacetime::Kerr(k) => k.spin,
+            _ => 0.0,
+        }
+    }
+
     /// The holes.
     pub fn holes(&self) -> &[Hole] {
         match self {

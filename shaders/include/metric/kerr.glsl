@@ -84,6 +84,17 @@ StaticFrame metric_static_frame(vec3 origin) {
 
 const bool METRIC_SHADES_DISK = true;  // (in metric_trace's crossings)
 
+// The emitter's lapse squared on the disk's plane at radius r (rs): the
+// ZAMO's alpha^2 = r^2 Delta / A (Boyer-Lindquist r, M = 1), whose limit at
+// a* = 0 is the non-rotating 1 - rs / r.
+float metric_emitter_lapse2(float r, float rs, float ir) {
+    float a = P.metric.spin_hi;
+    float x = 2.0 * r / rs;
+    float delta = x * x - 2.0 * x + a * a;
+    float sum = x * x + a * a;
+    return x * x * delta / (sum * sum - a * a * delta);
+}
+
 // BL radius (rs) of a disk hit at world point p: rho^2 = r^2 + a^2.
 float metric_disk_radius(vec3 p) {
     kreal rho = kreal(length(p - P.metric.holes[0].xyz));

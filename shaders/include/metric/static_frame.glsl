@@ -33,10 +33,12 @@ StaticFrame static_frame_at(vec3 x, bool gravity) {
     return f;
 }
 
-// metric_static_frame, metric_disk_radius and metric_gas_g (metric.glsl) of
-// a metric whose holes do not spin; `gravity` false: directions only (the
-// gas's shift stays the first hole's Keplerian one, as the thin disk's).
-// Expanded after disk.glsl.
+// metric_static_frame, metric_disk_radius, metric_gas_g and
+// metric_emitter_lapse2 (metric.glsl) of a metric whose holes do not spin;
+// `gravity` false: directions only (the gas's shift stays the first hole's
+// Keplerian one, as the thin disk's, and so does the emitter's lapse,
+// 1 - rs / r, which the disk's colour switches split g by). Expanded after
+// disk.glsl.
 #define NON_ROTATING_METRIC(gravity) \
     StaticFrame metric_static_frame(vec3 origin) { \
         return static_frame_at(origin, gravity); \
@@ -47,6 +49,9 @@ StaticFrame static_frame_at(vec3 x, bool gravity) {
     float metric_gas_g(float r, float lambda) { \
         float rs = P.metric.holes[0].w; \
         return emitter_g(1.0 - 1.5 * rs / r, keplerian_omega(rs, r), lambda, 1e-4) * observer_g; \
+    } \
+    float metric_emitter_lapse2(float r, float rs, float ir) { \
+        return 1.0 - rs * ir; \
     }
 
 #endif

@@ -112,8 +112,8 @@ pub struct DiskParams {
     pub speed: f32,
     /// 0: Newtonian profile; 1: Page-Thorne with the constants below.
     pub profile: f32,
-    /// The hole's spin a* (Page-Thorne; the emitter's lapse, disk.glsl).
-    pub spin: f32,
+    /// (The spin travels once, in [`MetricParams`].)
+    pub _pad: f32,
     /// Page-Thorne: sqrt(ISCO / M) and the roots of x^3 - 3x + 2a.
     pub pt_roots: [f32; 4],
     /// Page-Thorne: each root's log coefficient, then 1.5 a.
@@ -237,15 +237,15 @@ fn flag(on: bool) -> f32 {
     f32::from(u8::from(on))
 }
 
-/// r⁻³ (1 - sqrt(r_in / r)) at the Novikov-Thorne peak, the shader's normaliser.
-/// The Page-Thorne part of the disk's block (Newtonian: zeros); its peak,
-/// the normaliser, is set with the rest in `disk`.
-fn page_thorne(scene: &Scene) -> DiskParams {
+/// The Page-Thorne part of the disk's block for the spacetime's spin
+/// (Newtonian: zeros); its peak, the normaliser, is set with the rest in
+/// `disk`.
+fn page_thorne(scene: &Scene, spacetime: &Spacetime) -> DiskParams {
     use crate::scene::TemperatureProfile;
     if scene.disk.temperature_profile != TemperatureProfile::PageThorne {
         return DiskParams::default();
     }
-    let a = scene.black_holes.first().map_or(0.0, |h| h.spin);
+    let a = spacetime.spin();
     let pt = radii::page_thorne(a);
     DiskParams {
         profile: 1.0,
@@ -255,6 +255,7 @@ fn page_thorne(scene: &Scene) -> DiskParams {
     }
 }
 
+/// r⁻³ (1 - sqrt(r_in / r)) at the Novikov-Thorne peak, the shader's normaliser.
 fn nt_profile_at_peak(r_in: f64) -> f64 {
     let r = crate::physics::disk::peak_radius(r_in.max(1e-6));
     r.powi(-3) * (1.0 - (r_in / r).sqrt())
@@ -274,7 +275,7 @@ impl RaymarchParams {
                 steps: scene.quality.steps,
                 _pad: 0.0,
             },
-            disk: disk(scene),
+            disk: disk(scene, spacetime),
             volume: volume(scene),
             sky: sky(scene, frame),
             plane: plane(scene),
@@ -311,10 +312,7 @@ fn observer(scene: &Scene, spacetime: &Spacetime) -> ObserverParams {
 
 /// The spacetime's part of the block: its holes, and whether rays bend.
 fn metric(spacetime: &Spacetime) -> MetricParams {
-    let spin = match spacetime {
-        Spacetime::Kerr(k) => k.spin,
-        _ => 0.0,
-    };
+    let spin = spacetime.spin();
     let spin_hi = spin as f32;
     let mut holes = [[0.0f32; 4]; MAX_HOLES];
     for (slot, h) in holes.iter_mut().zip(spacetime.holes()) {
@@ -330,7 +328,7 @@ fn metric(spacetime: &Spacetime) -> MetricParams {
     }
 }
 
-fn disk(scene: &Scene) -> DiskParams {
+fn disk(scene: &Scene, spacetime: &Spacetime) -> DiskParams {
     let d = &scene.disk;
     let normal = DVec3::from(d.normal);
     let (e1, e2) = crate::physics::geodesic::disk_basis(normal);
@@ -348,7 +346,7 @@ fn disk(scene: &Scene) -> DiskParams {
         peak_temperature: d.temperature_k as f32,
         // The profile's own peak: T / T_peak is 1 at the hottest ring.
         nt_peak: if d.temperature_profile == crate::scene::TemperatureProfile::PageThorne {
-            radii::page_thorne_peak(scene.black_holes.first().map_or(0.0, |h| h.spin)) as f32
+            radii::page_thorne_peak(spacetime.spin()) as f32
         } else {
             nt_profile_at_peak(d.inner_radius) as f32
         },
@@ -356,8 +354,7 @@ fn disk(scene: &Scene) -> DiskParams {
         redshift: flag(scene.physics.gravitational_redshift),
         opacity: d.opacity as f32,
         speed: d.speed as f32,
-        spin: scene.black_holes.first().map_or(0.0, |h| h.spin) as f32,
-        ..page_thorne(scene)
+        ..page_thorne(scene, spacetime)
     }
 }
 

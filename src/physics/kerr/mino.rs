@@ -83,11 +83,11 @@ fn motion_direction(a: f64, y: &State, d: &State) -> DVec3 {
 pub fn integrate(
     position: DVec3,
     d: DVec3,
-    astar: f64,
+    spin: f64,
     disk: Option<KerrDisk>,
     rtol: f64,
 ) -> KerrRay {
-    let a = astar;
+    let a = spin;
     let cc = Constants::of(2.0 * position, d, a);
     let done = |outcome| KerrRay {
         outcome,

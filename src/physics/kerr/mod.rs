@@ -73,9 +73,9 @@ pub const MAX_CROSSINGS: u32 = 8;
 
 /// Traces the backward ray from a ZAMO camera at `position` (r_s, hole
 /// frame) along the unit direction `d` (the ZAMO's frame, world axes through
-/// the flat triad), spin `astar`.
-pub fn trace_zamo(position: DVec3, d: DVec3, astar: f64, disk: Option<KerrDisk>) -> KerrRay {
-    let a = astar;
+/// the flat triad), spin `spin`.
+pub fn trace_zamo(position: DVec3, d: DVec3, spin: f64, disk: Option<KerrDisk>) -> KerrRay {
+    let a = spin;
     let cc = Constants::of(2.0 * position, d, a);
     if cc.energy <= 0.0 {
         return KerrRay {
@@ -167,13 +167,13 @@ pub fn disk_g(r: f64, a: f64, lambda: f64, alpha: f64, omega: f64) -> f64 {
 pub fn trace(
     position: DVec3,
     d: DVec3,
-    astar: f64,
+    spin: f64,
     observer: KerrObserver,
     disk: Option<KerrDisk>,
 ) -> Result<KerrRay, PlacementError> {
-    let beta = observer_velocity(observer, 2.0 * position, astar)?;
+    let beta = observer_velocity(observer, 2.0 * position, spin)?;
     let (dz, doppler) = to_zamo_frame(d, beta);
-    let mut ray = trace_zamo(position, dz, astar, disk);
+    let mut ray = trace_zamo(position, dz, spin, disk);
     if let KerrOutcome::Disk { g, .. } = &mut ray.outcome {
         *g *= doppler;
     }
@@ -182,17 +182,17 @@ pub fn trace(
 
 /// The ISCO (M = 1; Bardeen, Press & Teukolsky 1972): prograde for
 /// a* >= 0, retrograde for a* < 0 (the disk always turns toward +phi).
-pub fn r_isco(astar: f64) -> f64 {
-    let b = astar.abs();
+pub fn r_isco(spin: f64) -> f64 {
+    let b = spin.abs();
     let z1 = 1.0 + (1.0 - b * b).cbrt() * ((1.0 + b).cbrt() + (1.0 - b).cbrt());
     let z2 = (3.0 * b * b + z1 * z1).sqrt();
-    3.0 + z2 - 1f64.copysign(astar) * ((3.0 - z1) * (3.0 + z1 + 2.0 * z2)).sqrt()
+    3.0 + z2 - 1f64.copysign(spin) * ((3.0 - z1) * (3.0 + z1 + 2.0 * z2)).sqrt()
 }
 
 /// The equatorial circular photon orbit 2M [1 + cos((2/3) acos(-+a*))]
 /// (M = 1), prograde or retrograde, a* >= 0.
-pub fn r_photon_equatorial(astar: f64, prograde: bool) -> f64 {
-    let x = if prograde { -astar } else { astar };
+pub fn r_photon_equatorial(spin: f64, prograde: bool) -> f64 {
+    let x = if prograde { -spin } else { spin };
     2.0 * (1.0 + (2.0 / 3.0 * x.acos()).cos())
 }
 
