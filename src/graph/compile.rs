@@ -19,6 +19,8 @@
 //! 6. Merge adjacent mip levels whose barriers are identical into one range.
 //! 7. Emit the final barriers that leave imported resources in their requested
 //!    final state.
+//! 8. Report the state each image is left in, so the owner of an image kept
+//!    across frames imports it next time in the state it is really in.
 
 use ash::vk;
 
@@ -79,6 +81,19 @@ pub struct Compiled {
     pub image_usage: Vec<vk::ImageUsageFlags>,
     /// Usage flags of every buffer (index = buffer id).
     pub buffer_usage: Vec<vk::BufferUsageFlags>,
+    /// The state each image is left in after the frame (index = image id):
+    /// an import's final access, else its last live use's; None for an
+    /// image no live pass uses. An import's owner keeps it for the next
+    /// frame's import ([`Compiled::left_in`]).
+    pub images_left: Vec<Option<Access>>,
+}
+
+impl Compiled {
+    /// The state the image named `name` is left in after the frame.
+    pub fn left_in(&self, graph: &Graph<'_>, name: &str) -> Option<Access> {
+        let id = graph.images.iter().position(|i| i.name == name)?;
+        self.images_left.get(id).copied().flatten()
+    }
 }
 
 /// Synchronization state of one subresource (one mip, or one buffer).
@@ -229,6 +244,7 @@ pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
         .map(|&p| states.before_pass(graph, p))
         .collect::<Result<Vec<_>>>()?;
     let after = states.leave_imports(graph);
+    let images_left = images_left(graph, &order);
     Ok(Compiled {
         order,
         culled,
@@ -236,7 +252,29 @@ pub fn compile(graph: &Graph<'_>) -> Result<Compiled> {
         after,
         image_usage,
         buffer_usage,
+        images_left,
     })
+}
+
+/// Step 8: the state each image is left in (an import's final access, else
+/// its last live use's), for the owner of an import to keep.
+fn images_left(graph: &Graph<'_>, order: &[usize]) -> Vec<Option<Access>> {
+    let mut left: Vec<Option<Access>> = vec![None; graph.images.len()];
+    for &p in order {
+        for u in &graph.passes[p].images {
+            left[u.image] = Some(u.access);
+        }
+    }
+    for (id, img) in graph.images.iter().enumerate() {
+        if let ImageOrigin::Imported {
+            final_access: Some(fin),
+            ..
+        } = img.origin
+        {
+            left[id] = Some(fin);
+        }
+    }
+    left
 }
 
 /// Step 1: every declared use is possible.

@@ -157,6 +157,14 @@ impl Renderer {
         Ok(())
     }
 
+    /// Keeps the state a submitted frame left the accumulation image in, as
+    /// the graph reports it, for its next import.
+    fn keep_mean_state(&mut self, left: &slots::ImportsLeft) {
+        if let (Some((_, state)), Some(a)) = (self.mean.as_mut(), left.of(MEAN)) {
+            *state = a;
+        }
+    }
+
     fn check_size(&self, width: u32, height: u32) -> Result<()> {
         let max = self.gpu.max_image_dimension();
         if width == 0 || height == 0 || width > max || height > max {
@@ -200,6 +208,24 @@ impl Renderer {
             }
         }
         Ok(())
+    }
+
+    /// The start of every frame, offscreen or in the window: the scene's
+    /// pipelines and images ready ([`Renderer::prepare_scene`]), slot
+    /// `slot` idle (its last frame waited for), the scene's spacetime built
+    /// once and the slot's parameter block written for it.
+    fn start_frame(
+        &mut self,
+        slot: usize,
+        scene: &Scene,
+        size: (u32, u32),
+        jitter: (f32, f32),
+    ) -> Result<Spacetime> {
+        self.prepare_scene(scene)?;
+        self.slots[slot].wait()?;
+        let spacetime = Spacetime::of(scene);
+        self.write_params(slot, (scene, &spacetime), size, jitter)?;
+        Ok(spacetime)
     }
 
     /// Writes slot `slot`'s parameter block for `scene` (the slot is idle).
@@ -249,19 +275,16 @@ impl Renderer {
     }
 }
 
+/// The accumulation image's name in a graph.
+const MEAN: &str = "accumulated mean";
+
 /// Imports the accumulation image (its description, binding and current
 /// state); the graph leaves it ready to be sampled.
 fn import_mean(
     g: &mut Graph<'_>,
     (desc, binding, state): (ImageDesc, ImageBinding, Access),
 ) -> ImageHandle {
-    g.import_image(
-        "accumulated mean",
-        desc,
-        binding,
-        state,
-        Some(Access::ComputeSampledRead),
-    )
+    g.import_image(MEAN, desc, binding, state, Some(Access::ComputeSampledRead))
 }
 
 /// One frame of a scene as the renderer's three paths (a still, a sample of

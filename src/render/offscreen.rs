@@ -37,16 +37,8 @@ impl Renderer {
                 "--aov geodesic describes thin-disk hits; this scene's disk is volumetric".into(),
             ));
         }
-        self.prepare_scene(scene)?;
-        self.slots[OFFSCREEN_SLOT].wait()?;
         let build = std::time::Instant::now();
-        let spacetime = Spacetime::of(scene);
-        self.write_params(
-            OFFSCREEN_SLOT,
-            (scene, &spacetime),
-            (width, height),
-            (0.0, 0.0),
-        )?;
+        let spacetime = self.start_frame(OFFSCREEN_SLOT, scene, (width, height), (0.0, 0.0))?;
         self.offscreen(
             (width, height),
             kind,
@@ -121,20 +113,15 @@ impl Renderer {
         for i in 0..spp {
             let owned = for_output(sample_scene(i));
             let scene = &owned;
-            self.slots[OFFSCREEN_SLOT].wait()?;
             let build = std::time::Instant::now();
             let (jx, jy) = crate::camera::jitter(i + 1);
             let jitter = (jx as f32, jy as f32);
-            let spacetime = Spacetime::of(scene);
-            self.write_params(OFFSCREEN_SLOT, (scene, &spacetime), (width, height), jitter)?;
+            let spacetime = self.start_frame(OFFSCREEN_SLOT, scene, (width, height), jitter)?;
             let mean = self
                 .mean
                 .as_ref()
                 .map(|(img, state)| (img.desc, img.binding(), *state))
                 .ok_or_else(|| Error::Other("accumulation image missing".into()))?;
-            if let Some((_, state)) = self.mean.as_mut() {
-                *state = Access::ComputeSampledRead;
-            }
             if i + 1 < spp {
                 let mut g = Graph::new(width, height);
                 let params = self.slots[OFFSCREEN_SLOT].params.binding();
@@ -152,7 +139,8 @@ impl Renderer {
                     params,
                     OutputKind::Hdr,
                 );
-                self.slots[OFFSCREEN_SLOT].submit(&self.gpu, g, &[], &[])?;
+                let left = self.slots[OFFSCREEN_SLOT].submit(&self.gpu, g, &[], &[])?;
+                self.keep_mean_state(&left);
                 if let Some(t) = self.slots[OFFSCREEN_SLOT].wait()? {
                     timings.add(&t);
                 }
@@ -216,8 +204,10 @@ impl Renderer {
         copy::add_copy_to_buffer(&mut g, &result, &mut out_buf);
         let slot = &mut self.slots[OFFSCREEN_SLOT];
         let build_ms = slots::ms_since(build_start);
-        slot.submit(&self.gpu, g, &[], &[])?;
+        let left = slot.submit(&self.gpu, g, &[], &[])?;
         let mut timings = slot.wait()?.unwrap_or_default();
+        self.keep_mean_state(&left);
+        let slot = &mut self.slots[OFFSCREEN_SLOT];
         timings.cpu.build_ms = build_ms;
         let readback_start = std::time::Instant::now();
         let readback = slot

@@ -12,7 +12,7 @@ use gpu_allocator::MemoryLocation;
 use crate::frame::{CpuPhases, FrameTimings, PassTiming};
 use crate::graph::{self, Graph, TransientPool};
 use crate::passes::raymarch::RaymarchParams;
-use crate::vk::{Buffer, CommandContext, Gpu, TimestampPool};
+use crate::vk::{Access, Buffer, CommandContext, Gpu, TimestampPool};
 use crate::{Error, Result};
 
 /// Frames in flight in the window.
@@ -22,6 +22,19 @@ pub const FRAMES_IN_FLIGHT: usize = 2;
 const MAX_TIMED_PASSES: u32 = 64;
 
 /// One frame in flight's own resources.
+/// The states a submitted frame leaves its imported images in, as the graph
+/// reports them ([`crate::graph::Compiled::images_left`]): what an image
+/// kept across frames is imported in next time.
+#[derive(Clone, Debug, Default)]
+pub struct ImportsLeft(Vec<(String, Access)>);
+
+impl ImportsLeft {
+    /// The state the import named `name` is left in.
+    pub fn of(&self, name: &str) -> Option<Access> {
+        self.0.iter().find(|(n, _)| n == name).map(|(_, a)| *a)
+    }
+}
+
 pub struct FrameSlot {
     /// Graph-owned images and buffers of this slot's frames; never shared
     /// with the other slot, so one slot cannot overwrite what the other's
@@ -127,10 +140,18 @@ impl FrameSlot {
         g: Graph<'_>,
         waits: &[(vk::Semaphore, vk::PipelineStageFlags2)],
         signals: &[vk::Semaphore],
-    ) -> Result<()> {
+    ) -> Result<ImportsLeft> {
         let t = Instant::now();
         let compiled = g.compile()?;
         self.cpu.compile_ms = ms_since(t);
+        let left = ImportsLeft(
+            g.images
+                .iter()
+                .zip(&compiled.images_left)
+                .filter(|(i, _)| matches!(i.origin, graph::ImageOrigin::Imported { .. }))
+                .filter_map(|(i, left)| Some((i.name.clone(), (*left)?)))
+                .collect(),
+        );
         let t = Instant::now();
         let cmd = self.commands.begin()?;
         self.timed = graph::execute::execute(
@@ -147,7 +168,7 @@ impl FrameSlot {
         self.cpu.submit_ms = ms_since(t);
         self.submitted = Some(Instant::now());
         self.pending = true;
-        Ok(())
+        Ok(left)
     }
 
     /// `e` (a fence that timed out, a lost device, no memory) with the pass

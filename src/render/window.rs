@@ -9,7 +9,6 @@ use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
 use crate::graph::{Graph, ImageHandle};
 use crate::passes::{self, copy};
 use crate::scene::Scene;
-use crate::spacetime::Spacetime;
 use crate::vk::{Access, ImageBinding, ImageDesc};
 use crate::{Error, Result};
 
@@ -69,17 +68,9 @@ impl Renderer {
         let (w, h) = view.render_size;
         self.check_size(w, h)?;
         self.check_size(target.desc.width, target.desc.height)?;
-        self.prepare_scene(scene)?;
         let slot_index = self.next_slot;
         self.next_slot = (self.next_slot + 1) % self.slots.len();
-        self.slots[slot_index].wait()?;
-        let spacetime = Spacetime::of(scene);
-        self.write_params(
-            slot_index,
-            (scene, &spacetime),
-            view.render_size,
-            view.jitter,
-        )?;
+        let spacetime = self.start_frame(slot_index, scene, view.render_size, view.jitter)?;
 
         // The running mean follows the render size; a new one starts over.
         let mut sample = view.sample;
@@ -133,12 +124,8 @@ impl Renderer {
             self.capture = Some((slot_index, out_w, out_h, target.desc.format));
         }
         let waits = [(target.acquired, Access::Acquired.info().stage)];
-        self.slots[slot_index].submit(&self.gpu, g, &waits, &[target.rendered])?;
-        if let Some((_, state)) = self.mean.as_mut() {
-            if sample.is_some() {
-                *state = Access::ComputeSampledRead;
-            }
-        }
+        let left = self.slots[slot_index].submit(&self.gpu, g, &waits, &[target.rendered])?;
+        self.keep_mean_state(&left);
         Ok(())
     }
 
