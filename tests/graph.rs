@@ -822,3 +822,32 @@ fn no_barrier_of_a_long_mixed_chain_names_an_access_its_stage_cannot_perform() {
         }
     }
 }
+
+/// An image kept across frames must be imported next time in the state the
+/// last frame left it in: the graph reports it (an import's final access,
+/// else its last live use's), so its owner never guesses.
+#[test]
+fn the_state_an_image_is_left_in_is_reported_for_the_next_import() {
+    let desc = ImageDesc::new_2d(FMT, 8, 8);
+    let mut g = Graph::new(8, 8);
+    let mut kept = g.import_image(
+        "kept",
+        desc,
+        fake_image(1),
+        Access::Nothing,
+        Some(Access::ComputeSampledRead),
+    );
+    let mut loose = g.import_image("loose", desc, fake_image(1), Access::Nothing, None);
+    let unused = g.import_image("unused", desc, fake_image(1), Access::Nothing, None);
+    let mut out = exported(&mut g);
+    let mut pass = g.add_pass("write both");
+    pass.write(&mut kept, Access::ComputeStorageWrite, Mips::ALL);
+    pass.write(&mut loose, Access::ComputeStorageWrite, Mips::ALL);
+    pass.write_buffer(&mut out, Access::ComputeStorageWrite);
+    pass.record(|_| Ok(()));
+    let _ = &unused;
+    let c = g.compile().expect("compiles");
+    assert_eq!(c.left_in(&g, "kept"), Some(Access::ComputeSampledRead));
+    assert_eq!(c.left_in(&g, "loose"), Some(Access::ComputeStorageWrite));
+    assert_eq!(c.left_in(&g, "unused"), None);
+}
