@@ -24,8 +24,9 @@
 #endif
 #ifdef SPLIT_PASSES
 // The build of the split stages (raymarch_split.comp.spv): the deferred
-// pass's work list, appended a SIMD group at a time (subgroup ballots). The other builds do not
-// declare its buffers, so no pipeline that leaves them alone touches them.
+// pass's work list, appended a SIMD group at a time (subgroup ballots). The
+// other builds do not declare its buffers, so no pipeline that leaves them
+// alone touches them.
 #extension GL_KHR_shader_subgroup_ballot : require
 #endif
 

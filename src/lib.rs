@@ -1,9 +1,14 @@
-//! blackhole: a Schwarzschild black-hole renderer on explicit Vulkan.
+//! blackhole: a black-hole renderer on explicit Vulkan, for holes that spin
+//! or do not, each pixel's light path in closed form.
 //!
 //! Layers, from the bottom: [`vk`] wraps Vulkan (one concept per file),
 //! [`graph`] schedules passes and derives every barrier, [`passes`] adds
 //! effects to a graph, [`render`] runs frames, [`output`] writes files.
-//! [`scene`] is the TOML scene schema; [`physics`] is the f64 CPU reference; [`settings`] reads the environment.
+//! [`scene`] is the TOML scene schema; [`spacetime`] is the one door to a
+//! hole's physics, on the f64 reference of [`physics`]; [`camera`] turns
+//! pixels into rays; [`features`] and [`deferred`] decide what runs on the
+//! device; [`settings`] reads the environment. docs/architecture.md draws
+//! the whole tree.
 
 #![warn(
     clippy::all,

@@ -56,7 +56,7 @@ pub mod glsl {
     pub const STAGE_TRACE: u32 = 1;
     pub const STAGE_DEFERRED: u32 = 2;
     pub use crate::camera::{PROJ_EQUIRECT, PROJ_FISHEYE, PROJ_PINHOLE, STEREO_NONE, STEREO_ODS};
-    /// Workgroups (of 64 listed pixels) in one row of the disk pass's
+    /// Workgroups (of 64 listed pixels) in one row of the deferred pass's
     /// indirect dispatch.
     pub const DEFERRED_ROW: u32 = 256;
     pub const LUT_MIN_K: f64 = crate::physics::blackbody::LUT_MIN_K;
@@ -129,7 +129,7 @@ pub struct Variant {
     /// The volumetric disk glows as a blackbody (else the colour map)
     /// (constant 6).
     pub volume_blackbody: bool,
-    /// The part of the split thin-disk ray march, `glsl::SPLIT_STAGE_*`
+    /// The part of the split ray march, `glsl::STAGE_*` (`SPLIT_STAGE`)
     /// (constant 7).
     pub stage: u32,
     /// The observer moves through the static frame: aberration (constant 8).
