@@ -63,21 +63,13 @@ fn projection_editor(ui: &mut Ui, c: &mut crate::scene::Camera) {
     let options: Vec<(Projection, &str)> = Projection::ALL.iter().map(|p| (*p, p.name())).collect();
     choice(ui, "projection", &mut c.projection, &options);
     if c.projection != before {
-        match c.projection {
-            Projection::Fisheye => c.vfov_deg = 180.0,
-            Projection::Pinhole if c.vfov_deg >= 180.0 => c.vfov_deg = 60.0,
-            _ => {}
-        }
-        if c.projection != Projection::Equirect {
+        c.vfov_deg = c.projection.suited_vfov(c.vfov_deg);
+        if !c.projection.takes_stereo() {
             c.stereo = Stereo::None;
         }
     }
-    ui.label(match c.projection {
-        Projection::Pinhole => "a flat image plane, vfov_deg top to bottom",
-        Projection::Equirect => "the whole sky around the camera (2:1, vfov_deg unused)",
-        Projection::Fisheye => "equidistant, vfov_deg across the circle (180: a dome master)",
-    });
-    if c.projection == Projection::Equirect {
+    ui.label(c.projection.description());
+    if c.projection.takes_stereo() {
         let mut ods = c.stereo == Stereo::Ods;
         ui.checkbox(&mut ods, "omni-directional stereo (left eye on top)");
         c.stereo = if ods { Stereo::Ods } else { Stereo::None };

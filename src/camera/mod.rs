@@ -55,6 +55,47 @@ impl Projection {
         }
     }
 
+    /// Whether `vfov_deg` suits this projection: in (0, 180) for the
+    /// pinhole, (0, 360] across a fisheye's circle; unused by the panorama.
+    /// The rule's words where it does not.
+    pub fn check_vfov(self, vfov_deg: f64) -> Result<(), &'static str> {
+        match self {
+            Projection::Pinhole if !(vfov_deg > 0.0 && vfov_deg < 180.0) => {
+                Err("must be in (0, 180) degrees")
+            }
+            Projection::Fisheye if !(vfov_deg > 0.0 && vfov_deg <= 360.0) => {
+                Err("must be in (0, 360] degrees for a fisheye (the field across its circle)")
+            }
+            _ => Ok(()),
+        }
+    }
+
+    /// The field of view a camera switching to this projection starts with:
+    /// a fisheye as a dome master (180 degrees); a pinhole given a field it
+    /// cannot show, 60 degrees; otherwise `vfov_deg` as it was.
+    pub fn suited_vfov(self, vfov_deg: f64) -> f64 {
+        match self {
+            Projection::Fisheye => 180.0,
+            Projection::Pinhole if vfov_deg >= 180.0 => 60.0,
+            _ => vfov_deg,
+        }
+    }
+
+    /// Whether it can hold a stereo pair (omni-directional stereo: the
+    /// panorama only).
+    pub fn takes_stereo(self) -> bool {
+        self == Projection::Equirect
+    }
+
+    /// What it shows, in a line (the window's panel).
+    pub fn description(self) -> &'static str {
+        match self {
+            Projection::Pinhole => "a flat image plane, vfov_deg top to bottom",
+            Projection::Equirect => "the whole sky around the camera (2:1, vfov_deg unused)",
+            Projection::Fisheye => "equidistant, vfov_deg across the circle (180: a dome master)",
+        }
+    }
+
     /// Whether every pixel of the image has a ray (a fisheye's corners,
     /// outside its circle, have none: black and transparent).
     pub fn every_pixel_has_a_ray(self) -> bool {

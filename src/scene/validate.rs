@@ -5,7 +5,7 @@ use glam::DVec3;
 
 use super::locate::Seg::{self, Idx, Key};
 use super::locate::display_path;
-use super::{Camera, CameraPath, DiskKind, MAX_HOLES, Projection, Scene, SkyKind, Stereo};
+use super::{Camera, CameraPath, DiskKind, MAX_HOLES, Scene, SkyKind, Stereo};
 use crate::spacetime::{Refusal, Spacetime};
 
 /// A rejected value: its key path, the value as written, and the reason.
@@ -432,21 +432,11 @@ pub const MAX_SPIN: f64 = 0.9999;
 /// eyes' distance.
 fn check_lens(c: &Camera, at: &[Seg]) -> Check {
     let key = |k: &'static str| [at, &[Key(k)]].concat();
-    match c.projection {
-        Projection::Pinhole if !(c.vfov_deg > 0.0 && c.vfov_deg < 180.0) => {
-            return fail(&key("vfov_deg"), c.vfov_deg, "must be in (0, 180) degrees");
-        }
-        Projection::Fisheye if !(c.vfov_deg > 0.0 && c.vfov_deg <= 360.0) => {
-            return fail(
-                &key("vfov_deg"),
-                c.vfov_deg,
-                "must be in (0, 360] degrees for a fisheye (the field across its circle)",
-            );
-        }
-        _ => {}
+    if let Err(why) = c.projection.check_vfov(c.vfov_deg) {
+        return fail(&key("vfov_deg"), c.vfov_deg, why);
     }
     let lens = |k: &'static str| [Key("camera"), Key(k)];
-    if c.stereo == Stereo::Ods && c.projection != Projection::Equirect {
+    if c.stereo == Stereo::Ods && !c.projection.takes_stereo() {
         return fail(
             &lens("stereo"),
             "\"ods\"",
