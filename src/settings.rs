@@ -11,7 +11,7 @@ use std::sync::OnceLock;
 use std::time::Duration;
 
 use crate::vk::fault::{self, Fault};
-use crate::vk::{DEFAULT_GPU_TIMEOUT_S, GpuSettings, Validation};
+use crate::vk::{GpuSettings, Validation};
 use crate::{Error, Result};
 
 /// What the environment asks for.
@@ -36,15 +36,22 @@ pub struct Settings {
 }
 
 impl Default for Settings {
+    /// Nothing asked: the device's own defaults ([`GpuSettings`]), the
+    /// build's validation, every path on.
     fn default() -> Self {
+        let GpuSettings {
+            device,
+            gpu_timeout,
+            fault,
+        } = GpuSettings::default();
         Settings {
-            device: None,
+            device,
             validation: None,
-            gpu_timeout: Duration::from_secs_f64(DEFAULT_GPU_TIMEOUT_S),
+            gpu_timeout,
             no_split: false,
             no_quad: false,
             no_f64: false,
-            fault: None,
+            fault,
         }
     }
 }

@@ -378,6 +378,7 @@ impl Scene {
             "\"keyframes\"",
             "needs at least one [[animation.keyframe]]",
         )?;
+        let spacetime = Spacetime::of(self);
         for (i, k) in a.keyframes.iter().enumerate() {
             rule(
                 k.time.in_range() && (i == 0 || k.time > a.keyframes[i - 1].time),
@@ -386,7 +387,7 @@ impl Scene {
                 "keyframe times must be finite and increasing",
             )?;
             let at = [Key("animation"), Key("keyframe"), Idx(i)];
-            self.check_camera(&k.camera(&self.camera), &at)?;
+            self.check_camera_in(&spacetime, &k.camera(&self.camera), &at)?;
         }
         if a.camera == CameraPath::Orbit {
             self.check_orbit()?;
