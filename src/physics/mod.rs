@@ -8,6 +8,7 @@ pub mod disk;
 pub mod geodesic;
 pub mod kerr;
 pub mod observer;
+pub mod rain;
 pub mod redshift;
 
 pub use geodesic::{Disk, Hole, Outcome, TraceOptions, TraceResult, trace};
