@@ -10,5 +10,6 @@ pub mod kerr;
 pub mod observer;
 pub mod rain;
 pub mod redshift;
+pub mod river;
 
 pub use geodesic::{Disk, Hole, Outcome, TraceOptions, TraceResult, trace};
