@@ -15,7 +15,7 @@ fn every_level_is_its_own_timed_pass() {
     scene.bloom.levels = 4;
     let f = r.render(&scene, 96, 54, OutputKind::Ldr).unwrap();
     let names: Vec<&str> = f.timings.passes.iter().map(|p| p.name.as_str()).collect();
-    let ray_march = common::ray_march_passes(&r, &scene, 96, 54);
+    let ray_march = r.ray_march_passes(&scene, 96, 54);
     let post = [
         "bloom prefilter",
         "bloom down 1",

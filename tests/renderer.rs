@@ -27,7 +27,7 @@ fn frames_are_timed_per_pass_and_validation_stays_silent() {
     for _ in 0..2 {
         let f = r.render(&scene, 48, 27, OutputKind::Ldr).unwrap();
         let names: Vec<&str> = f.timings.passes.iter().map(|p| p.name.as_str()).collect();
-        let ray_march = common::ray_march_passes(&r, &scene, 48, 27);
+        let ray_march = r.ray_march_passes(&scene, 48, 27);
         assert_eq!(names, [&ray_march[..], &["composite", "readback"]].concat());
         assert!(
             f.timings
@@ -53,11 +53,7 @@ fn frames_are_timed_per_pass_and_validation_stays_silent() {
     let names: Vec<&str> = f.timings.passes.iter().map(|p| p.name.as_str()).collect();
     assert_eq!(
         names,
-        [
-            &common::ray_march_passes(&r, &scene, 48, 27)[..],
-            &["readback"]
-        ]
-        .concat(),
+        [&r.ray_march_passes(&scene, 48, 27)[..], &["readback"]].concat(),
         "composite culled for HDR output"
     );
     assert_eq!(r.validation_counts(), (0, 0));

@@ -2,8 +2,8 @@
 // Mirrored by `RaymarchParams` in src/passes/raymarch/params.rs, built there
 // in one place from the scene and the frame; tests/layout.rs checks every
 // member's offset against the SPIR-V. A read-only storage buffer rather than a
-// uniform buffer: see RAYMARCH_BINDINGS in src/passes/raymarch/mod.rs for the driver
-// leak that avoids.
+// uniform buffer: see `BINDINGS` in src/passes/raymarch/mod.rs for the
+// driver leak that avoids.
 #ifndef PARAMS_GLSL
 #define PARAMS_GLSL
 

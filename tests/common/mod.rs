@@ -120,17 +120,6 @@ pub fn renderer() -> blackhole::Renderer {
     .expect("a Vulkan device with the validation layer (install mesa-vulkan-drivers and vulkan-validationlayers)")
 }
 
-/// The ray march's passes in a frame of `scene` at `width` x `height` on
-/// this renderer's device (the pass's own names and split decision).
-pub fn ray_march_passes(
-    r: &blackhole::Renderer,
-    scene: &blackhole::Scene,
-    width: u32,
-    height: u32,
-) -> Vec<&'static str> {
-    r.ray_march_passes(scene, width, height)
-}
-
 /// The 8-bit pixels of a frame (panics on a float frame).
 pub fn rgba8(f: blackhole::Frame) -> Vec<u8> {
     match f.pixels {
