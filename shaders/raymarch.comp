@@ -128,6 +128,12 @@ vec3 path_color(Hit hit, Footprint fp, float pixel_angle) {
     if (hit.outcome == OUT_ESCAPED) {
         color = sky_color(hit.dir, fp);
         grid_plane(hit.pos, hit.dir, pixel_angle, color);
+        // Light from rest at infinity, as the camera sees it: brightness
+        // by g^4, colour as 6500 K blackbody light's (the switch sky_shift).
+        if (P.sky.shift > 0.5) {
+            float g = observer_g, g2 = g * g;
+            color *= (g2 * g2) * blackbody(6500.0 * g) / blackbody(6500.0);
+        }
     }
     else if (!METRIC_SHADES_DISK && hit.outcome == OUT_DISK) {
         // The disk where the path stopped at it (several holes, gravity

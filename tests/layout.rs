@@ -130,6 +130,8 @@ fn raymarch_params_match_the_glsl_block() {
         &[
             offset_of!(ObserverParams, velocity),
             offset_of!(ObserverParams, kind),
+            offset_of!(ObserverParams, radial),
+            offset_of!(ObserverParams, fall_speed),
         ],
     );
     raymarch_struct_matches(
@@ -199,7 +201,7 @@ fn raymarch_params_match_the_glsl_block() {
             offset_of!(SkyParams, row0),
             offset_of!(SkyParams, star_flux),
             offset_of!(SkyParams, row1),
-            offset_of!(SkyParams, _pad0),
+            offset_of!(SkyParams, shift),
             offset_of!(SkyParams, row2),
             offset_of!(SkyParams, _pad1),
         ],

@@ -195,12 +195,57 @@ fn gpu_shadow_edges_match_closed_forms_to_1e5_rad() {
             synge(r)
         );
     }
-    // 1.01 rs: the closest a falling camera may come (scene validation).
-    for r in [blackhole::scene::FALLING_MIN_R, 4.0, 15.0] {
+    // 1.01 rs: where the fall used to stop (the camera now crosses the
+    // horizon: the next test).
+    for r in [1.01, 4.0, 15.0] {
         let p = falling_edge(r);
         let e = gpu_edge("falling", r, p);
         println!(
             "falling r {r:5}: aberrated Synge {p:.7} rad, GPU edge {e:.7} (columns 6.25e-6 rad wide)"
+        );
+        assert!((e - p).abs() <= 1e-5, "falling r {r}: {e} vs {p}");
+    }
+}
+
+/// The edge of the black region seen by a camera falling from rest at
+/// infinity at r <= rs, straight down (psi from the direction to the
+/// hole), from the rain frame's constants alone: a pixel at psi has E / omega
+/// = 1 - v cos psi and L / omega = r sin psi (v = sqrt(rs / r)), so b = r
+/// sin psi / (1 - v cos psi), and light from the sky needs b < b_c. At the
+/// crossing (v = 1) b = rs cot(psi / 2): the edge is 2 atan(rs / b_c) =
+/// 42.10 degrees.
+fn rain_edge(r: f64) -> f64 {
+    let v = fall_speed(r, RS);
+    let b = |psi: f64| r * psi.sin() / (1.0 - v * psi.cos());
+    // Past the other universe's cone (1 - v cos psi > 0), b falls with psi.
+    let (mut lo, mut hi) = ((1.0 / v).min(1.0).acos() + 1e-12, std::f64::consts::PI);
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if b(mid) > B_CRIT {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+/// A camera falling through the horizon: the GPU's shadow edge (the last
+/// captured column before the sky) against the rain frame's closed form, to
+/// 1e-5 rad, at the crossing (42.10 degrees, independent of any code) and
+/// inside, halfway and a tenth of the way to the centre.
+#[test]
+fn gpu_shadow_edge_of_a_camera_falling_through_the_horizon() {
+    let crossing = 2.0 * (RS / B_CRIT).atan();
+    assert!((crossing.to_degrees() - 42.10).abs() < 0.005);
+    assert!((rain_edge(RS) - crossing).abs() < 1e-12);
+    for r in [1.0, 0.999, 0.5, 0.1] {
+        let p = rain_edge(r);
+        let e = gpu_edge("falling", r, p);
+        println!(
+            "falling r {r:5} (inside): rain frame {:.5} deg, GPU edge {:.5} deg",
+            p.to_degrees(),
+            e.to_degrees()
         );
         assert!((e - p).abs() <= 1e-5, "falling r {r}: {e} vs {p}");
     }

@@ -98,14 +98,44 @@ PixelRay fisheye(uvec2 px) {
     return ray;
 }
 
+// A falling camera's pixel direction (its own frame: the rain observer's,
+// the flat frame of Painleve-Gullstrand coordinates; src/physics/rain.rs)
+// as a coordinate direction, valid outside, at and inside the horizon
+// (RAIN_FORM: one non-rotating hole). The
+// photon arriving along -dir has E / omega = 1 + v d_r and transverse
+// momentum |d_t|; traced back it moves out at the rate v + d_r against
+// |d_t| across (the static frame's squeezed direction outside). The camera
+// measures g = omega / E of light from rest at infinity.
+// The camera's own place has its radial direction and speed from the host
+// in f64 (each one rounding: E = 1 + v d_r cancels where light comes from
+// below, and near the photon orbit the path's constant amplifies its
+// error twelvefold); an ODS eye off that place forms them here.
+vec3 rain_to_coordinate(StaticFrame frame, vec3 dir) {
+    bool eye = int(P.camera.stereo) == STEREO_ODS;
+    float v = eye ? sqrt(frame.fall2) : P.observer.fall_speed;
+    vec3 rh = eye ? frame.radial : P.observer.radial;
+    float dr = dot(dir, rh);
+    vec3 dt = dir - dr * rh;
+    float en = 1.0 + v * dr;
+    rain_energy = en;
+    rain_k2 = en * en / max(dot(dt, dt), 1e-30);
+    // No frame at rest to split the gravitational part from the rest
+    // (disk_color): the camera's clock is taken as infinity's.
+    observer_lapse = 1.0;
+    observer_g = en > 0.0 ? 1.0 / en : 1.0;
+    return normalize((v + dr) * rh + dt);
+}
+
 // A direction measured in the observer's own frame (src/physics/observer.rs)
 // at `origin` as a coordinate direction: aberration by its velocity into the
 // static frame there (the metric's, metric_static_frame), then that frame's
 // radial squeeze; its clock and motion scale the redshift it measures
-// (observer_g, observer_lapse).
+// (observer_g, observer_lapse). A falling camera of one non-rotating hole
+// takes the rain form instead.
 vec3 observer_to_coordinate(vec3 origin, vec3 dir) {
     if (int(P.observer.kind) != OBS_FLAT) {
         StaticFrame frame = metric_static_frame(origin);
+        if (RAIN_FORM) return rain_to_coordinate(frame, dir);
         vec3 beta = P.observer.velocity;
         float b2 = dot(beta, beta);
         float doppler = 1.0;

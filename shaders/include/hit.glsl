@@ -10,6 +10,7 @@
 #define OUT_DISK 2
 #define OUT_NO_STEPS 3
 #define OUT_NO_RAY 4     // no ray: outside a fisheye's image circle
+#define OUT_OTHER_UNIVERSE 5  // from inside the horizon: light from the eternal hole's other universe
 
 struct Hit {
     int outcome;

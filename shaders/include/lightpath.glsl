@@ -16,6 +16,7 @@
 
 #include "constants.glsl"
 #include "elliptic.glsl"
+#include "variant.glsl"
 
 #define PATH_SCATTERED 0
 #define PATH_TRAPPED 1
@@ -35,6 +36,7 @@ struct LightPath {
     // Where u lies in [u_lo, u_hi] (the disk's annulus): intervals of w,
     // (a.x, a.y) and (b.x, b.y), possibly empty or outside the path.
     vec2 win_a, win_b;
+    vec3 cam;                // sn, cn, dn at the camera's own w0 (path_u)
 };
 
 // The path's four incomplete integrals F = sqrt(sin2) R_F(cos2, delta2, 1)
@@ -46,7 +48,7 @@ struct LightPath {
 //   plunging:  cos = (A - v)/(A + v), sin2 = 4Av/(A + v)^2, delta2 = 1 - k^2 sin2, v = u - u1
 // Differences from the root at the camera come from g0, without cancellation.
 vec4 path_integrals(LightPath p, vec4 uu, float u0, float g0, float u2, float u3, float d21, float d31,
-                    float A) {
+                    float A, out vec3 cam) {
     vec4 a1 = uu - p.u1;
     vec4 sin2, cos2, delta2;
     bvec4 at_k = bvec4(false);
@@ -81,6 +83,8 @@ vec4 path_integrals(LightPath p, vec4 uu, float u0, float g0, float u2, float u3
         cos2 = cp * cp;
         delta2 = 1.0 - (1.0 - p.mc) * sin2;
     }
+    cam = sqrt(max(vec3(sin2.x, cos2.x, delta2.x), 0.0));
+    if (p.kind == PATH_PLUNGING && a1.x > A) cam.y = -cam.y;  // past the plunge's pi/2
     vec4 w = sqrt(max(sin2, 0.0)) * carlson_rf4(max(cos2, 0.0), max(delta2, 0.0));
     w = mix(w, vec4(p.kk), at_k);
     // Plunging: past phi = pi/2 (v > A), F = 2K - F(pi - phi).
@@ -90,18 +94,21 @@ vec4 path_integrals(LightPath p, vec4 uu, float u0, float g0, float u2, float u3
     return w;
 }
 
-// The path of a ray starting at u0 with du/dphi = du (> 0 inward); u_lo <
-// u_hi bound an annulus (the thin disk's: rs / outer, rs / inner) whose
-// elliptic-argument windows the path keeps.
+// The path of a ray starting at u0 with du/dphi = du (> 0 inward) and the
+// constant c = (rs / b)^2 (= du^2 + u0^2 (1 - u0)); u_lo < u_hi bound an
+// annulus (the thin disk's: rs / outer, rs / inner) whose elliptic-argument
+// windows the path keeps. At and inside the horizon (u0 >= 1) a path is of
+// the trapped kind (c < 4/27: out through the horizon to its turning point
+// and back into the hole) or plunging (out to the sky), and its backward
+// ray starts outward (du < 0): the same formulas.
 //
 // Written as one straight line of code: each case only chooses the
 // arguments of the same three elliptic integrals (at the camera, at the end,
 // and K). On a CPU Vulkan driver such as lavapipe every branch of a shader
 // runs for every pixel under a mask, so three cases with their own integrals
 // would cost three times as much.
-LightPath light_path(float u0, float du, float u_lo, float u_hi) {
+LightPath light_path(float u0, float du, float c, float u_lo, float u_hi) {
     LightPath p;
-    float c = du * du + u0 * u0 * (1.0 - u0);
     float e = 4.0 / 27.0 - c;
     bool inward = du > 0.0;
     bool three = e > 0.0;
@@ -159,7 +166,7 @@ LightPath light_path(float u0, float du, float u_lo, float u_hi) {
     vec4 uu = vec4(u0, u_end, u_lo, u_hi);
     if (p.kind == PATH_SCATTERED) uu.zw = min(uu.zw, u2);
     if (p.kind == PATH_TRAPPED) uu.zw = max(uu.zw, u3);
-    vec4 w = path_integrals(p, uu, u0, g0, u2, u3, d21, d31, A);
+    vec4 w = path_integrals(p, uu, u0, g0, u2, u3, d21, d31, A, p.cam);
     p.w0 = w.x;
     float w_end = w.y;
     // u in [u_lo, u_hi]: scattered on the way in (w in [W(u_lo), W(u_hi)])
@@ -186,11 +193,34 @@ float first_crossing_in(LightPath p, vec2 win, float phi0) {
     return (hi >= lo && phi <= hi) ? phi : 1e30;
 }
 
+// Whether the backward ray moves inward (u grows) at angle phi: u grows
+// with w on the plunge, and on (0, K) of each 2K period of the others.
+bool path_moves_in(LightPath p, float phi) {
+    float w = p.w0 + p.rate * phi;
+    float wr = w - 2.0 * p.kk * floor(w * p.inv_2k);
+    bool grows = p.kind == PATH_PLUNGING || wr < p.kk;
+    return grows == (p.rate > 0.0);
+}
+
 // u = rs / r at angle phi along the path: one sn/cn evaluation whatever the
 // kind (see light_path for why).
+//
+// A falling camera's plunging paths (RAIN_FORM) take a short sweep from the
+// camera's own point by the addition theorem, cn(w0 + d) = (cn0 cn_d - sn0
+// sn_d dn0 dn_d) / (1 - k^2 sn0^2 sn_d^2), instead of from w0: inside the
+// horizon w0 lies past K, its rounding is some ulps of 2K, and the nearly
+// radial rays seen from there have r(phi) so steep (dr/dphi ~ r^2 / b) that
+// it moved a distant disk crossing by 3e-4 rs. Only where the denominator
+// stays above 1/4: near the photon orbit (k -> 1) it cancels, and there
+// the direct form is the better.
 float path_u(LightPath p, float phi) {
     float w = p.w0 + p.rate * phi;
     float k2 = 2.0 * p.kk;
+    float d = p.rate * phi;
+    // (sn_d <= sin d up to pi/2, as am d <= d: the denominator's least.)
+    float sd_most = sin(min(abs(d), HALF_PI));
+    float least = 1.0 - (1.0 - p.mc) * p.cam.x * p.cam.x * sd_most * sd_most;
+    bool from_camera = RAIN_FORM && p.kind == PATH_PLUNGING && abs(d) <= p.kk && least > 0.25;
     // Scattered and trapped: sn^2 has period 2K and is even, so [0, K].
     // Plunging: w in [0, 2K), and cn(2K - w) = -cn(w).
     float wr = w - k2 * floor(w * p.inv_2k);
@@ -198,7 +228,15 @@ float path_u(LightPath p, float phi) {
     bool plunging = p.kind == PATH_PLUNGING;
     bool far_half = w > p.kk;
     float arg = plunging ? (far_half ? k2 - w : max(w, 0.0)) : wr;
-    vec2 sc = jacobi_sn_cn(arg, p.agm);
+    vec2 sc = jacobi_sn_cn(from_camera ? abs(d) : arg, p.agm);
+    if (from_camera) {
+        float sd = d < 0.0 ? -sc.x : sc.x;
+        float m = 1.0 - p.mc;
+        float dn_d = sqrt(max(1.0 - m * sd * sd, 0.0));
+        vec3 c = p.cam;
+        float cn_w = (c.y * sc.y - c.x * sd * c.z * dn_d) / (1.0 - m * c.x * c.x * sd * sd);
+        return p.u1 + p.d21 * (1.0 - cn_w) / (1.0 + cn_w);
+    }
     float cn = plunging && far_half ? -sc.y : sc.y;
     float sn2 = sc.x * sc.x;
     if (plunging) return p.u1 + p.d21 * (1.0 - cn) / (1.0 + cn);

@@ -57,6 +57,7 @@ struct CameraParams {
 // (metric_static_frame, metric.glsl).
 struct ObserverParams {
     vec3 velocity;  float kind;          // velocity in the static frame (world axes); OBS_*
+    vec3 radial;    float fall_speed;    // RAIN_FORM: hole-to-camera unit vector and sqrt(rs / r)
 };
 
 struct MetricParams {
@@ -110,7 +111,7 @@ struct SkyParams {
     float brightness;
     float galaxy;                        // the galaxy band
     vec3 row0;      float star_flux;     // rows of the world-to-galactic matrix; flux of a magnitude-0 star
-    vec3 row1;      float pad0;
+    vec3 row1;      float shift;         // 1: shifted by the camera's g (sky_shift)
     vec3 row2;      float pad1;
 };
 

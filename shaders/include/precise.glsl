@@ -55,6 +55,17 @@ float asin_precise(float x) {
     return x < 0.0 ? -r : r;
 }
 
+// atan2(y, x) to full f32 precision, by asin_precise of the smaller of
+// the sine and cosine (at most 1/sqrt(2), where its series converges
+// fastest): the driver's atan is good to 4096 ulp only.
+float atan2_precise(float y, float x) {
+    float ih = inversesqrt(max(x * x + y * y, 1e-37));
+    float s = abs(y) * ih, c = abs(x) * ih;
+    float a = s <= c ? asin_precise(s) : 1.5707963267948966 - asin_precise(c);
+    if (x < 0.0) a = 3.141592653589793 - a;
+    return y < 0.0 ? -a : a;
+}
+
 // sin x for x in [0, pi/3] by its Taylor series to x^13 (error below 2e-9):
 // no range reduction, which a driver's sin does for any argument.
 float sin_third(float x) {

@@ -13,6 +13,16 @@ float observer_g = 1.0;
 // camera_ray(): the disk's gravitational shift is measured against it.
 float observer_lapse = 1.0;
 
+// A falling camera of one non-rotating hole (RAIN_FORM: the rain form of
+// camera.glsl, src/physics/rain.rs): the photon's energy per unit
+// of the frequency the camera sees, E / omega = 1 + v d_r (at most 0: the
+// light came from the other universe of the eternal hole), and (E / p_t)^2,
+// E over the photon's momentum across the radial direction, squared, from
+// which the path's constant (rs / b)^2 = u0^2 (E / p_t)^2 is formed without
+// the cancellation of du^2 + u0^2 (1 - u0) inside.
+float rain_energy = 1.0;
+float rain_k2 = -1.0;
+
 // Per-pixel offset of the volume's samples within their spacing, set by
 // main(): a fixed spacing would show as rings where rays run along the
 // density gradient; a hashed offset turns them into fine, stable grain.

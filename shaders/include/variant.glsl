@@ -40,5 +40,9 @@ layout(constant_id = 9) const bool PAGE_THORNE = false;
 #define PROJ_EQUIRECT 1
 #define PROJ_FISHEYE 2
 layout(constant_id = 10) const int PROJECTION = PROJ_PINHOLE;
+// A falling camera of one non-rotating hole: pixels become rays by the rain
+// form (camera.glsl), which holds outside, at and inside the horizon, and
+// the path starts from the camera's own point (lightpath.glsl, path_u).
+layout(constant_id = 11) const bool RAIN_FORM = false;
 
 #endif

@@ -219,6 +219,7 @@ fn disk_and_physics(ui: &mut Ui, s: &mut Scene) {
             &mut s.physics.gravitational_redshift,
             "gravitational_redshift",
         );
+        ui.checkbox(&mut s.physics.sky_shift, "sky_shift");
     });
 }
 

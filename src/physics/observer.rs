@@ -11,6 +11,13 @@
 //!   the disk's axis, co-rotating with the disk, at speed √(rs / (2(r - rs)))
 //!   in the static frame (r > 1.5 rs).
 //! - `Falling`: falling radially from rest at infinity, speed √(rs/r) inward.
+//!   Around one hole its pixels become rays by the rain form
+//!   ([`super::rain`]), outside, at and inside the horizon, which needs no
+//!   static frame: the coordinate direction normalize((v + d_r) r̂ + d_t)
+//!   and g = g∞ / (1 + v d_r), the same as the aberrated static frame's
+//!   outside (and, near the horizon, without its Lorentz factor's loss of
+//!   digits). A pixel with 1 + v d_r <= 0 (inside only) sees light from
+//!   the other universe.
 //! - `Flat`: the pixel direction is the coordinate direction and g = g∞
 //!   (what simple renderers do).
 //!
@@ -67,10 +74,13 @@ pub struct Observer {
     pub kind: ObserverKind,
     /// Unit vector from the reference hole to the camera.
     pub rhat: DVec3,
-    /// √(1 - rs/r) (1 for `Flat` or with gravity off).
+    /// √(1 - rs/r) (1 for `Flat` or with gravity off; 0 inside the horizon).
     pub lapse: f64,
     /// Velocity in the static frame, in world axes (|β| < 1).
     pub beta: DVec3,
+    /// A falling observer of one hole: its fall speed v = √(rs/r) (above 1
+    /// inside the horizon), for the rain form.
+    pub rain: Option<f64>,
 }
 
 /// Speed of the circular geodesic orbit at r in the static frame.
@@ -109,6 +119,7 @@ impl Observer {
                 rhat: DVec3::Z,
                 lapse: 1.0,
                 beta: DVec3::ZERO,
+                rain: None,
             };
         };
         let rel = position - hole.position;
@@ -131,11 +142,24 @@ impl Observer {
                 }
             }
         };
+        let rain = (gravity && kind == ObserverKind::Falling && holes.len() == 1)
+            .then(|| fall_speed(r, hole.rs));
         Observer {
             kind,
             rhat,
             lapse,
             beta,
+            rain,
+        }
+    }
+
+    /// The energy at infinity per unit of the frequency this observer sees,
+    /// E / ω, of light arriving along pixel direction `d`: 1 + v d_r in the
+    /// rain form (at most 0: from the other universe), else positive.
+    pub fn energy(&self, d: DVec3) -> f64 {
+        match self.rain {
+            Some(v) => 1.0 + v * d.dot(self.rhat),
+            None => 1.0 / self.g_factor(d),
         }
     }
 
@@ -160,6 +184,10 @@ impl Observer {
         if self.kind == ObserverKind::Flat {
             return d;
         }
+        if let Some(v) = self.rain {
+            let dr = d.dot(self.rhat);
+            return ((v + dr) * self.rhat + (d - dr * self.rhat)).normalize();
+        }
         let ds = self.static_direction(d);
         let dr = ds.dot(self.rhat);
         let dt = ds - dr * self.rhat;
@@ -172,6 +200,10 @@ impl Observer {
     pub fn g_factor(&self, d: DVec3) -> f64 {
         if self.kind == ObserverKind::Flat {
             return 1.0;
+        }
+        if let Some(v) = self.rain {
+            let e = 1.0 + v * d.dot(self.rhat);
+            return if e > 0.0 { 1.0 / e } else { 1.0 };
         }
         let doppler = if self.beta == DVec3::ZERO {
             1.0

@@ -20,6 +20,10 @@ pub enum RiverOutcome {
     /// Out to infinity: the backward ray's final unit direction (the
     /// direction on the sky the light came from).
     Escaped(DVec3),
+    /// The thin disk (its plane through the hole, normal +y): the crossing's
+    /// radius, its azimuth atan2(z, x) and the redshift g the rain observer
+    /// measures of light from the disk's prograde Keplerian emitter there.
+    Disk { r: f64, phi: f64, g: f64 },
     /// Back into the horizon from outside (the shadow).
     Captured,
     /// E <= 0: light from the other universe of an eternal hole.
@@ -28,9 +32,45 @@ pub enum RiverOutcome {
     NoSteps,
 }
 
+/// The thin disk a backward ray may end at: the annulus [inner, outer] of
+/// the plane y = 0 through the hole (normal +y, turning counter-clockwise
+/// seen from +y).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RiverDisk {
+    pub inner: f64,
+    pub outer: f64,
+}
+
 /// The backward ray of a rain observer at `x0` (the hole of size `rs` at the
 /// origin) along the unit pixel direction `d` of its frame.
 pub fn trace_rain(rs: f64, x0: DVec3, d: DVec3) -> RiverOutcome {
+    trace_rain_to(rs, x0, d, None)
+}
+
+/// One RK4 step of length `h` of the backward flow `deriv`.
+fn rk4(
+    deriv: &impl Fn(DVec3, DVec3) -> (DVec3, DVec3),
+    x: DVec3,
+    p: DVec3,
+    h: f64,
+) -> (DVec3, DVec3) {
+    let (k1x, k1p) = deriv(x, p);
+    let (k2x, k2p) = deriv(x + 0.5 * h * k1x, p + 0.5 * h * k1p);
+    let (k3x, k3p) = deriv(x + 0.5 * h * k2x, p + 0.5 * h * k2p);
+    let (k4x, k4p) = deriv(x + h * k3x, p + h * k3p);
+    (
+        x + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x),
+        p + h / 6.0 * (k1p + 2.0 * k2p + 2.0 * k3p + k4p),
+    )
+}
+
+/// The same, ending at the thin `disk` where the ray first crosses its
+/// plane inside the annulus. The crossing is found by bisecting the step
+/// that crosses the plane (each trial an RK4 step from the step's start);
+/// its g is sqrt(1 - 1.5 rs / r) / (E - Omega L), with E = -p_t and
+/// L = p . (y x x) the photon's conserved energy and angular momentum
+/// about the disk's axis (per unit of the frequency the camera sees).
+pub fn trace_rain_to(rs: f64, x0: DVec3, d: DVec3, disk: Option<RiverDisk>) -> RiverOutcome {
     let beta = |x: DVec3| rs.sqrt() * x.length().powf(-1.5) * x;
     let d = d.normalize();
     let e = 1.0 + beta(x0).dot(d);
@@ -48,7 +88,9 @@ pub fn trace_rain(rs: f64, x0: DVec3, d: DVec3) -> RiverOutcome {
     };
     let (mut x, mut p) = (x0, -d);
     let mut was_outside = x0.length() > rs;
-    let r_escape = 1e4 * rs;
+    // Far enough that what bending and flow are left turn the direction by
+    // under 1e-9 rad (rs b / (2 r^2) and the flow's v (b / r)).
+    let r_escape = 1e7 * rs;
     for _ in 0..2_000_000 {
         let r = x.length();
         if r > r_escape {
@@ -64,13 +106,34 @@ pub fn trace_rain(rs: f64, x0: DVec3, d: DVec3) -> RiverOutcome {
         }
         // A step a small fraction of r along the path (RK4).
         let speed = deriv(x, p).0.length().max(1e-300);
-        let h = 2e-3 * r.min(1e3 * rs) / speed;
-        let (k1x, k1p) = deriv(x, p);
-        let (k2x, k2p) = deriv(x + 0.5 * h * k1x, p + 0.5 * h * k1p);
-        let (k3x, k3p) = deriv(x + 0.5 * h * k2x, p + 0.5 * h * k2p);
-        let (k4x, k4p) = deriv(x + h * k3x, p + h * k3p);
-        x += h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-        p += h / 6.0 * (k1p + 2.0 * k2p + 2.0 * k3p + k4p);
+        let h = 2e-3 * r / speed;
+        let (nx, np) = rk4(&deriv, x, p, h);
+        if let Some(disk) = disk
+            && (x.y > 0.0) != (nx.y > 0.0)
+        {
+            let (mut lo, mut hi) = (0.0, h);
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if (rk4(&deriv, x, p, mid).0.y > 0.0) == (x.y > 0.0) {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            let (cx, cp) = rk4(&deriv, x, p, 0.5 * (lo + hi));
+            let rc = DVec3::new(cx.x, 0.0, cx.z).length();
+            if rc >= disk.inner && rc <= disk.outer {
+                let l = cp.dot(DVec3::Y.cross(cx));
+                let omega = (rs / (2.0 * rc * rc * rc)).sqrt();
+                let g = (1.0 - 1.5 * rs / rc).sqrt() / (e - omega * l);
+                return RiverOutcome::Disk {
+                    r: rc,
+                    phi: cx.z.atan2(cx.x),
+                    g,
+                };
+            }
+        }
+        (x, p) = (nx, np);
     }
     RiverOutcome::NoSteps
 }
@@ -123,7 +186,7 @@ mod tests {
                     1
                 };
                 let kind = match got {
-                    RiverOutcome::Escaped(_) => 0,
+                    RiverOutcome::Escaped(_) | RiverOutcome::Disk { .. } => 0,
                     RiverOutcome::Captured => 1,
                     RiverOutcome::OtherUniverse => 2,
                     RiverOutcome::NoSteps => 3,
@@ -141,6 +204,83 @@ mod tests {
                 assert!(seen[2] > 0, "r {r}: {seen:?}");
             }
         }
+    }
+
+    /// The integrated paths (the metric alone) and the closed form fed by
+    /// the falling observer's rain form (physics/observer.rs) agree on the
+    /// sky's direction and the disk's radius and azimuth to 1e-7, for
+    /// cameras outside, at, and inside the horizon: the rain form and
+    /// Binet's u(phi) through r = rs are one light path. Pixels near the
+    /// critical b or a disk edge (where 1e-9 of direction decides) are
+    /// left out.
+    #[test]
+    fn integrated_paths_meet_the_closed_form_through_the_horizon() {
+        use crate::physics::closed_form::trace_closed;
+        use crate::physics::geodesic::{Disk, Hole, Outcome};
+        use crate::physics::observer::{Observer, ObserverKind};
+        let rs = 1.0;
+        let hole = Hole {
+            position: DVec3::ZERO,
+            rs,
+        };
+        let disk = Disk {
+            normal: DVec3::Y,
+            inner: 3.0,
+            outer: 12.0,
+        };
+        let river_disk = Some(RiverDisk {
+            inner: 3.0,
+            outer: 12.0,
+        });
+        let mut compared = [0usize; 2];
+        for r in [2.5, 1.0 + 1e-3, 1.0, 0.5, 0.1] {
+            let x0 = DVec3::new(0.0, 0.3 * r, -r * 0.91f64.sqrt());
+            let obs = Observer::new(ObserverKind::Falling, x0, &[hole], DVec3::Y, true);
+            for k in 0..400 {
+                // A spiral over the sphere of directions.
+                let z = 1.0 - (f64::from(k) + 0.5) / 200.0;
+                let az = 2.399_963 * f64::from(k);
+                let s = (1.0 - z * z).sqrt();
+                let d = DVec3::new(s * az.cos(), z, s * az.sin());
+                let got = trace_rain_to(rs, x0, d, river_disk);
+                if obs.energy(d) <= 0.0 {
+                    assert_eq!(got, RiverOutcome::OtherUniverse, "r {r}, d {d}");
+                    continue;
+                }
+                let v = obs.coordinate_direction(d);
+                let want = trace_closed(&hole, Some(&disk), x0, v);
+                // Well conditioned: a 1e-6 turn of d keeps the outcome.
+                let near = trace_closed(
+                    &hole,
+                    Some(&disk),
+                    x0,
+                    obs.coordinate_direction((d + 1e-6 * DVec3::X).normalize()),
+                );
+                if std::mem::discriminant(&near) != std::mem::discriminant(&want) {
+                    continue;
+                }
+                match (got, want) {
+                    (RiverOutcome::Escaped(a), Outcome::Escaped { direction }) => {
+                        assert!(
+                            (a - direction).length() < 1e-7,
+                            "r {r}, d {d}: {a} vs {direction}"
+                        );
+                        compared[0] += 1;
+                    }
+                    (RiverOutcome::Disk { r: rc, phi, .. }, Outcome::Disk { position, .. }) => {
+                        let (rw, pw) = (position.length(), position.z.atan2(position.x));
+                        assert!(
+                            (rc - rw).abs() < 1e-7 && (phi - pw).abs() < 1e-7,
+                            "r {r}, d {d}: {rc} {phi} vs {rw} {pw}"
+                        );
+                        compared[1] += 1;
+                    }
+                    (RiverOutcome::Captured, Outcome::Captured { .. }) => {}
+                    (a, b) => panic!("r {r}, d {d}: integrated {a:?}, closed form {b:?}"),
+                }
+            }
+        }
+        assert!(compared[0] > 1000 && compared[1] > 50, "{compared:?}");
     }
 
     /// Far out, the river is still and the integrated path is the exterior

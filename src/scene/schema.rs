@@ -328,6 +328,12 @@ pub struct Physics {
     pub beaming: bool,
     /// Gravitational redshift of the disk's light (colour and brightness).
     pub gravitational_redshift: bool,
+    /// Shift the sky's light by the g the camera measures of light from
+    /// rest at infinity (brightness by g^4, colour as 6500 K light's): the
+    /// sky above a falling camera dims and reddens, below it brightens and
+    /// blues. Off by default (the sky as the catalogue or image gives it);
+    /// the presets that fall through the horizon turn it on.
+    pub sky_shift: bool,
 }
 
 impl Default for Physics {
@@ -337,6 +343,7 @@ impl Default for Physics {
             doppler: true,
             beaming: true,
             gravitational_redshift: true,
+            sky_shift: false,
         }
     }
 }

@@ -6,6 +6,7 @@ use glam::DVec3;
 use super::locate::Seg::{self, Idx, Key};
 use super::locate::display_path;
 use super::{Camera, CameraPath, DiskKind, MAX_HOLES, Scene, SkyKind, Stereo};
+use crate::physics::observer::ObserverKind;
 use crate::spacetime::{Refusal, Spacetime};
 
 /// A rejected value: its key path, the value as written, and the reason.
@@ -177,11 +178,10 @@ impl Scene {
         // rules.
         let cam = DVec3::from(c.position);
         let placed = spacetime.placement(c.observer, cam, DVec3::from(self.disk.normal));
-        if let Err(Refusal::InsideHorizon { hole }) = placed {
-            let why = format!("is inside the horizon of black_hole[{hole}]");
-            return fail(&key("position"), vec3(&c.position), why);
+        if let Err(r @ (Refusal::InsideHorizon { .. } | Refusal::InsideAbsorber { .. })) = placed {
+            return refuse(c, at, r);
         }
-        self.check_eyes(c, cam)?;
+        self.check_eyes(spacetime, c, cam)?;
         match placed {
             Ok(()) => Ok(()),
             Err(refusal) => refuse(c, at, refusal),
@@ -189,17 +189,22 @@ impl Scene {
     }
 
     /// Each ODS eye sits ipd / 2 from the camera: both outside every hole,
-    /// with room to spare (an eye at the horizon sees nothing).
-    fn check_eyes(&self, c: &Camera, cam: DVec3) -> Check {
+    /// with room to spare (an eye at the horizon sees nothing), or, for a
+    /// falling camera of one non-rotating hole, both outside the
+    /// singularity's neighbourhood as the camera is.
+    fn check_eyes(&self, spacetime: &Spacetime, c: &Camera, cam: DVec3) -> Check {
         if c.stereo != Stereo::Ods || !self.physics.gravity {
             return Ok(());
         }
+        let falls_in =
+            c.observer == ObserverKind::Falling && matches!(spacetime, Spacetime::Schwarzschild(_));
+        let least = if falls_in { FALLING_MIN_R } else { 1.01 };
         for (i, h) in self.black_holes.iter().enumerate() {
             let r = (cam - DVec3::from(h.position)).length();
-            if r - 0.5 * c.ipd <= 1.01 * h.rs {
+            if r - 0.5 * c.ipd <= least * h.rs {
                 let why = format!(
-                    "puts an eye within 1.01 rs of black_hole[{i}] (the camera is {r:.4} from it; \
-                     each eye sits ipd / 2 from the camera)"
+                    "puts an eye within {least} rs of black_hole[{i}] (the camera is {r:.4} from \
+                     it; each eye sits ipd / 2 from the camera)"
                 );
                 return fail(&[Key("camera"), Key("ipd")], c.ipd, why);
             }
@@ -492,7 +497,26 @@ fn refuse(c: &Camera, at: &[Seg], refusal: Refusal) -> Check {
         Refusal::InsideHorizon { hole } => fail(
             &key("position"),
             position(),
-            format!("is inside the horizon of black_hole[{hole}]"),
+            format!(
+                "is inside the horizon of black_hole[{hole}], where only a \"falling\" observer \
+                 can be (nothing else stands still or orbits there): set observer = \"falling\""
+            ),
+        ),
+        Refusal::InsideAbsorber { hole, several } => fail(
+            &key("position"),
+            position(),
+            if several {
+                format!(
+                    "is inside the horizon of black_hole[{hole}]; with several holes the light \
+                     paths are their pulls summed, an approximation that says nothing about an \
+                     interior: only one non-rotating hole's \"falling\" camera may go inside"
+                )
+            } else {
+                format!(
+                    "is inside black_hole[{hole}] with gravity off, where a hole is an absorbing \
+                     sphere: turn gravity on to fall in with observer = \"falling\""
+                )
+            },
         ),
         Refusal::InsidePhotonSphere { r, photon } => fail(
             &key("position"),
@@ -511,9 +535,10 @@ fn refuse(c: &Camera, at: &[Seg], refusal: Refusal) -> Check {
             &key("position"),
             position(),
             format!(
-                "is {:.3e} rs from the horizon; a \"falling\" observer must stay at r >= {FALLING_MIN_R} rs \
-                 (closer, its speed is within 32-bit rounding of light's)",
-                r / rs - 1.0
+                "is {:.4} rs from the singularity; a \"falling\" observer must stay at r >= \
+                 {FALLING_MIN_R} rs (closer, the light paths lose the accuracy the renderer \
+                 promises: docs/inside-the-horizon.md)",
+                r / rs
             ),
         ),
         Refusal::FlatAroundSpin => fail(

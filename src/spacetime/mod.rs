@@ -128,6 +128,7 @@ impl Spacetime {
                 rhat: DVec3::Y,
                 lapse: 1.0,
                 beta: k.observer_velocity(kind, position).unwrap_or(DVec3::ZERO),
+                rain: None,
             };
         }
         let gravity = !matches!(self, Spacetime::Flat(_));

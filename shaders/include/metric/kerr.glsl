@@ -79,6 +79,7 @@ StaticFrame metric_static_frame(vec3 origin) {
     StaticFrame f;
     f.radial = vec3(0.0, 1.0, 0.0);
     f.lapse = 1.0;
+    f.fall2 = 0.0;
     return f;
 }
 

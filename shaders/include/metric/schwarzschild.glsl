@@ -45,11 +45,19 @@ void volume_crossing(LightPath path, float phi_j, float tilt, vec2 inside, vec3 
 
 const int VOLUME_CROSSINGS = 4;
 
-// Coordinate time the light takes from angle phi on the path back to the
-// camera (phi = 0), in the units of the scene (c = 1): the integral of dt/dphi = r^2 / (b (1 - rs/r))
-// by Simpson's rule over eight intervals of the exact path. Only the
-// differences across the disk matter (what turns where while the light is
-// on its way), and those are good to a few per cent.
+// The time the light takes from angle phi on the path back to the camera
+// (phi = 0), in the units of the scene (c = 1), by Simpson's rule over
+// eight intervals of the exact path. Only the differences across the disk
+// matter (what turns where while the light is on its way), and those are
+// good to a few per cent.
+//
+// A camera at rest counts Schwarzschild time, dt/dphi = r^2 / (b (1 -
+// rs/r)). A falling camera (RAIN_FORM), which crosses the horizon where
+// that clock stops, counts ingoing time v = t + r*, finite through the
+// horizon: dv/dphi = b / (1 + q) where the light moves inward and
+// r^2 (1 + q) / (b (1 - rs/r)) where it moves outward, q = sqrt(1 - (b u /
+// rs)^2 (1 - u)), plus r*(r) = r + rs ln|r / rs - 1| at the disk (its
+// emitter's t = v - r*); the camera's own v is the frame's time.
 float light_travel_time(LightPath path, float phi, float b, float rs) {
     const int N = 8;
     float h = phi / float(N);
@@ -57,11 +65,25 @@ float light_travel_time(LightPath path, float phi, float b, float rs) {
     for (int i = 0; i <= N; ++i) {
         float u = max(path_u(path, h * float(i)), 1e-6);
         float r = rs / u;
-        float f = r * r / (b * max(1.0 - u, 1e-3));
+        float f;
+        if (RAIN_FORM) {
+            float q = b * u / rs;
+            q = sqrt(max(1.0 - q * q * (1.0 - u), 0.0));
+            // (The backward ray moving inward: the light moved outward.)
+            f = path_moves_in(path, h * float(i)) ? r * r * (1.0 + q) / (b * max(1.0 - u, 1e-3))
+                                                  : b / (1.0 + q);
+        } else {
+            f = r * r / (b * max(1.0 - u, 1e-3));
+        }
         float w = (i == 0 || i == N) ? 1.0 : ((i & 1) == 1 ? 4.0 : 2.0);
         sum += w * f;
     }
-    return sum * h / 3.0;
+    float time = sum * h / 3.0;
+    if (RAIN_FORM) {
+        float r_end = rs / max(path_u(path, phi), 1e-6);
+        time += r_end + rs * log(max(abs(r_end / rs - 1.0), 1e-6));
+    }
+    return time;
 }
 
 // The thin disk's first crossing inside the annulus from angle `next` on
@@ -123,6 +145,13 @@ const bool METRIC_SPLITS_RARE = false;
 
 Hit metric_trace(vec3 x, vec3 d) {
     Hit hit = hit_start(OUT_NO_STEPS, vec3(0.0), d);
+    if (RAIN_FORM && rain_energy <= 0.0) {
+        // E <= 0 inside the horizon: the light crossed the other universe's
+        // horizon into the hole, not ours (none in a hole formed by collapse).
+        hit.outcome = OUT_OTHER_UNIVERSE;
+        hit.pos = x;
+        return hit;
+    }
     vec3 c = P.metric.holes[0].xyz;
     float rs = P.metric.holes[0].w;
     vec3 rel = x - c;
@@ -142,10 +171,13 @@ Hit metric_trace(vec3 x, vec3 d) {
     float du = -(dot(d, e1) / dot(d, e2)) * u0;
     // The thin disk's annulus in u (anything for other disks).
     float u_lo = rs / max(P.disk.outer, 1e-6), u_hi = rs / max(P.disk.inner, 1e-6);
-    LightPath path = light_path(u0, du, u_lo, min(u_hi, 1.0));
+    // The path's constant (rs / b)^2; a falling camera has it from the
+    // photon's energy (rain_k2, camera.glsl).
+    float cb = RAIN_FORM ? u0 * u0 * rain_k2 : du * du + u0 * u0 * (1.0 - u0);
+    LightPath path = light_path(u0, du, cb, u_lo, min(u_hi, 1.0));
     // Impact parameter b (world units) and the photon's angular momentum
     // about the disk axis (the ray runs backwards: -nrm).
-    float b_imp = rs * inversesqrt(max(du * du + u0 * u0 * (1.0 - u0), 1e-30));
+    float b_imp = rs * inversesqrt(max(cb, 1e-30));
     vec3 N = P.disk.normal;
     float lambda = -dot(nrm, N) * b_imp;
 
@@ -153,7 +185,12 @@ Hit metric_trace(vec3 x, vec3 d) {
     float na = dot(e1, N), nb = dot(e2, N);
     float tilt = length(vec2(na, nb));
     if (kind != DISK_NONE && tilt > 1e-6) {
-        float phi0 = atan(-na, nb);       // a cos(phi) + b sin(phi) = 0
+        // a cos(phi) + b sin(phi) = 0. A falling camera's, to full
+        // precision: from inside the horizon the rays run out nearly
+        // radially, r(phi) is steep (dr/dphi ~ r^2 / b, 500 at 12 rs), and
+        // the driver's atan moved the disk crossing by 7e-4 rs. (The
+        // cameras at rest keep the driver's: their goals hold with it.)
+        float phi0 = RAIN_FORM ? atan2_precise(-na, nb) : atan(-na, nb);
         if (kind == DISK_THIN) {
             // The plane crossings inside the annulus: the first crossing
             // angle in either window where u is in [rs/outer, rs/inner]; one

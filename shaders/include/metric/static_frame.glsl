@@ -9,7 +9,9 @@
 
 struct StaticFrame {
     vec3 radial;  // unit, from the reference hole to the point
-    float lapse;  // sqrt(1 - rs/r); 1 without gravity
+    float lapse;  // sqrt(1 - rs/r) (0 inside the horizon); 1 without gravity
+    float fall2;  // rs / r, the square of a radial fall's speed from rest at
+                  // infinity (the rain form, camera.glsl); 0 without gravity
 };
 
 // The frame at `x` of the hole nearest to it; with `gravity` false only
@@ -30,6 +32,7 @@ StaticFrame static_frame_at(vec3 x, bool gravity) {
     StaticFrame f;
     f.radial = rel / r;
     f.lapse = gravity ? sqrt(max(1.0 - hole.w / r, 0.0)) : 1.0;
+    f.fall2 = gravity ? hole.w / r : 0.0;
     return f;
 }
 

@@ -138,6 +138,9 @@ pub struct Variant {
     pub page_thorne: bool,
     /// `camera::Projection` as a number (constant 10).
     pub projection: u32,
+    /// A falling camera of one non-rotating hole: its pixels become rays
+    /// by the rain form, outside, at and inside the horizon (constant 11).
+    pub rain_form: bool,
 }
 
 impl Variant {
@@ -162,6 +165,7 @@ impl Variant {
             page_thorne: scene.disk.temperature_profile
                 == crate::scene::TemperatureProfile::PageThorne,
             projection: scene.camera.projection.gpu_id(),
+            rain_form: spacetime.camera_observer(scene).rain.is_some(),
         }
     }
 
@@ -180,7 +184,7 @@ impl Variant {
 
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against include/variant.glsl).
-    pub const CONSTANT_NAMES: [&'static str; 11] = [
+    pub const CONSTANT_NAMES: [&'static str; 12] = [
         "DISK_KIND",
         "SKY_KIND",
         "GRID_PLANE",
@@ -192,9 +196,10 @@ impl Variant {
         "OBSERVER_MOVES",
         "PAGE_THORNE",
         "PROJECTION",
+        "RAIN_FORM",
     ];
 
-    pub fn constants(&self) -> [u32; 11] {
+    pub fn constants(&self) -> [u32; 12] {
         [
             self.disk,
             self.sky,
@@ -207,12 +212,13 @@ impl Variant {
             u32::from(self.observer_moves),
             u32::from(self.page_thorne),
             self.projection,
+            u32::from(self.rain_form),
         ]
     }
 
     pub fn name(&self) -> String {
         format!(
-            "raymarch{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {}, page-thorne {}, projection {})",
+            "raymarch{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {}, page-thorne {}, projection {}, rain form {})",
             if self.aov { " aov" } else { "" },
             self.path,
             self.disk,
@@ -225,7 +231,8 @@ impl Variant {
             self.stage,
             self.observer_moves,
             self.page_thorne,
-            self.projection
+            self.projection,
+            self.rain_form
         )
     }
 }

@@ -50,6 +50,13 @@ pub struct ObserverParams {
     pub velocity: [f32; 3],
     /// `ObserverKind` as a number (`OBS_*`).
     pub kind: f32,
+    /// The rain form (a falling camera of one hole): the unit direction
+    /// from the hole to the camera, formed in f64 (world axes)...
+    pub radial: [f32; 3],
+    /// ...and the fall speed sqrt(rs / r) there (above 1 inside the
+    /// horizon), so that the cancellation in E = 1 + v d_r starts from
+    /// one rounding of each (0 for every other camera).
+    pub fall_speed: f32,
 }
 
 /// The holes.
@@ -155,7 +162,8 @@ pub struct SkyParams {
     /// Flux of a magnitude-0 star.
     pub star_flux: f32,
     pub row1: [f32; 3],
-    pub _pad0: f32,
+    /// 1: the sky's light shifted by the camera's g (`[physics] sky_shift`).
+    pub shift: f32,
     pub row2: [f32; 3],
     pub _pad1: f32,
 }
@@ -307,6 +315,8 @@ fn observer(scene: &Scene, spacetime: &Spacetime) -> ObserverParams {
     ObserverParams {
         velocity: v3(obs.beta),
         kind: obs.kind as u32 as f32,
+        radial: v3(obs.rhat),
+        fall_speed: obs.rain.unwrap_or(0.0) as f32,
     }
 }
 
@@ -390,7 +400,7 @@ fn sky(scene: &Scene, frame: &FrameSpec) -> SkyParams {
         row0: v3(m.row(0)),
         star_flux: crate::stars::FLUX_MAG0 as f32,
         row1: v3(m.row(1)),
-        _pad0: 0.0,
+        shift: flag(scene.physics.sky_shift),
         row2: v3(m.row(2)),
         _pad1: 0.0,
     }
