@@ -9,32 +9,7 @@ mod common;
 use std::path::Path;
 use std::process::Command;
 
-use common::{assert_clean, blackhole, path_in, run, scratch};
-
-/// A command that must be refused before the GPU starts: a device name no
-/// device has makes any GPU work fail with a different message.
-fn refused_early(mut c: Command) -> String {
-    c.env("BLACKHOLE_DEVICE", "no-such-device-here");
-    let (code, stdout, stderr) = run(c);
-    assert_eq!(code, 2, "exit code\nstdout:\n{stdout}\nstderr:\n{stderr}");
-    assert!(
-        !stderr.contains("no-such-device-here"),
-        "refused only after looking for a GPU:\n{stderr}"
-    );
-    let errors: Vec<&str> = stderr.lines().filter(|l| l.starts_with("error:")).collect();
-    assert_eq!(errors.len(), 1, "one error line:\n{stderr}");
-    errors[0].to_string()
-}
-
-fn render_scene(dir: &tempfile::TempDir, toml: &str, extra: &[&str]) -> Command {
-    let scene = path_in(dir, "scene.toml");
-    std::fs::write(&scene, toml).expect("writing the scene");
-    let mut c = blackhole();
-    c.args(["render", "--width", "64", "--height", "36", "--scene"])
-        .arg(&scene)
-        .args(extra);
-    c
-}
+use common::{assert_clean, blackhole, path_in, refused_early, render_scene, run, scratch};
 
 fn files_in(dir: &Path) -> Vec<String> {
     let mut v: Vec<String> = std::fs::read_dir(dir)
@@ -211,61 +186,6 @@ fn a_volumetric_disk_inside_the_photon_sphere_is_refused() {
         e.contains("disk.inner_radius = 1.2") && e.contains("photon sphere"),
         "{e}"
     );
-}
-
-#[test]
-fn a_falling_camera_a_hair_from_the_horizon_draws_and_one_at_the_centre_is_refused() {
-    // On either side of the horizon, 1e-8 rs from it: every pixel a
-    // number (the rain form has no Lorentz factor to blow up).
-    for z in ["-1.00000001", "-0.99999999", "-1.0"] {
-        let (_, aov) = common::render_aov(
-            &format!("[camera]\nobserver = \"falling\"\nposition = [0.0, 0.0, {z}]\n"),
-            32,
-            18,
-        );
-        assert!(
-            aov.pixels().all(|p| p.0.iter().all(|v| v.is_finite())),
-            "z {z}: a pixel is not a number"
-        );
-    }
-    let dir = scratch();
-    let c = render_scene(
-        &dir,
-        "[camera]\nobserver = \"falling\"\nposition = [0.0, 0.0, -0.01]\n",
-        &[],
-    );
-    let e = refused_early(c);
-    assert!(
-        e.contains("camera.position") && e.contains("0.05 rs") && e.contains("singularity"),
-        "{e}"
-    );
-}
-
-#[test]
-fn inside_a_horizon_only_a_falling_camera_of_one_hole_is_let_in() {
-    let dir = scratch();
-    for (toml, words) in [
-        (
-            "[camera]\nposition = [0.0, 0.0, -0.5]\n",
-            &["camera.position", "horizon", "\"falling\""][..],
-        ),
-        (
-            "[camera]\nobserver = \"zamo\"\nposition = [0.0, 0.3, -0.5]\n",
-            &["camera.position", "\"falling\""][..],
-        ),
-        (
-            "[camera]\nobserver = \"falling\"\nposition = [0.0, 0.0, -0.5]\n[[black_hole]]\nposition = [0.0, 0.0, 0.0]\n[[black_hole]]\nposition = [30.0, 0.0, 0.0]\n",
-            &["camera.position", "black_hole[0]", "several holes"][..],
-        ),
-        (
-            "[camera]\nobserver = \"falling\"\nposition = [0.0, 0.0, -0.5]\n[physics]\ngravity = false\n",
-            &["camera.position", "gravity off"][..],
-        ),
-    ] {
-        let e = refused_early(render_scene(&dir, toml, &[]));
-        assert!(words.iter().all(|w| e.contains(w)), "{toml}: {e}");
-    }
-    assert!(files_in(dir.path()).iter().all(|f| f == "scene.toml"));
 }
 
 // ---------------------------------------------------------------- work lost

@@ -14,6 +14,7 @@ use blackhole::physics::closed_form::trace_closed;
 use blackhole::physics::geodesic::{Disk, Hole, Outcome};
 use blackhole::physics::observer::{Observer, ObserverKind};
 use blackhole::physics::river::{RiverDisk, RiverOutcome, trace_rain_to};
+use common::{refused_early, render_scene, scratch};
 use glam::DVec3;
 
 const DIR_TOL: f64 = 1e-5;
@@ -210,4 +211,112 @@ fn gpu_interior_aov_matches_the_integrated_reference() {
             assert!(f.outcomes[2] > 0, "r {r}: no disk seen: {:?}", f.outcomes);
         }
     }
+}
+
+/// How far apart two AOVs of the same view are: the mean angle between the
+/// escape directions of the pixels that escape in both, and the fraction of
+/// pixels whose outcome differs.
+fn aov_change(a: &image::Rgba32FImage, b: &image::Rgba32FImage) -> (f64, f64) {
+    let (mut sum, mut both, mut differ) = (0.0, 0usize, 0usize);
+    for (p, q) in a.pixels().zip(b.pixels()) {
+        let (p, q) = (p.0.map(f64::from), q.0.map(f64::from));
+        if p[3] != q[3] {
+            differ += 1;
+        } else if p[3] == 0.0 {
+            sum += angle(p, q);
+            both += 1;
+        }
+    }
+    (
+        sum / both.max(1) as f64,
+        differ as f64 / a.pixels().len() as f64,
+    )
+}
+
+/// The image is continuous through the crossing: frames at rs (1 + 1e-3)
+/// and rs (1 - 1e-3) differ no more than two frames 2e-3 rs apart just
+/// outside do (printed beside a pair at 1.1 rs for scale): the same closed
+/// form on both sides, nothing special at r = rs.
+#[test]
+fn frames_through_the_crossing_change_as_frames_outside_do() {
+    let aov = |r: f64| {
+        let at = [0.0, 0.3 * r, -r * 0.91f64.sqrt()];
+        common::render_aov(
+            &format!(
+                "[camera]\nposition = {at:?}\nlook_at = [3.0, 0.0, 0.0]\nvfov_deg = 90.0\nobserver = \"falling\"\n"
+            ),
+            96,
+            54,
+        )
+        .1
+    };
+    let across = aov_change(&aov(1.0 + 1e-3), &aov(1.0 - 1e-3));
+    let outside = aov_change(&aov(1.005), &aov(1.003));
+    let farther = aov_change(&aov(1.101), &aov(1.099));
+    println!(
+        "mean escape-direction change and outcome changes: across the horizon {across:?}, \
+         just outside {outside:?}, at 1.1 rs {farther:?}"
+    );
+    assert!(across.0 > 0.0, "the frames did not change at all");
+    assert!(
+        across.0 <= 1.5 * outside.0 && across.1 <= 1.5 * outside.1 + 2.0 / (96.0 * 54.0),
+        "across {across:?} against outside {outside:?}"
+    );
+}
+
+// ---------------------------------------------------------------- placement
+
+#[test]
+fn a_falling_camera_a_hair_from_the_horizon_draws_and_one_at_the_centre_is_refused() {
+    // On either side of the horizon, 1e-8 rs from it: every pixel a
+    // number (the rain form has no Lorentz factor to blow up).
+    for z in ["-1.00000001", "-0.99999999", "-1.0"] {
+        let (_, aov) = common::render_aov(
+            &format!("[camera]\nobserver = \"falling\"\nposition = [0.0, 0.0, {z}]\n"),
+            32,
+            18,
+        );
+        assert!(
+            aov.pixels().all(|p| p.0.iter().all(|v| v.is_finite())),
+            "z {z}: a pixel is not a number"
+        );
+    }
+    let dir = scratch();
+    let c = render_scene(
+        &dir,
+        "[camera]\nobserver = \"falling\"\nposition = [0.0, 0.0, -0.01]\n",
+        &[],
+    );
+    let e = refused_early(c);
+    assert!(
+        e.contains("camera.position") && e.contains("0.05 rs") && e.contains("singularity"),
+        "{e}"
+    );
+}
+
+#[test]
+fn inside_a_horizon_only_a_falling_camera_of_one_hole_is_let_in() {
+    let dir = scratch();
+    for (toml, words) in [
+        (
+            "[camera]\nposition = [0.0, 0.0, -0.5]\n",
+            &["camera.position", "horizon", "\"falling\""][..],
+        ),
+        (
+            "[camera]\nobserver = \"zamo\"\nposition = [0.0, 0.3, -0.5]\n",
+            &["camera.position", "\"falling\""][..],
+        ),
+        (
+            "[camera]\nobserver = \"falling\"\nposition = [0.0, 0.0, -0.5]\n[[black_hole]]\nposition = [0.0, 0.0, 0.0]\n[[black_hole]]\nposition = [30.0, 0.0, 0.0]\n",
+            &["camera.position", "black_hole[0]", "several holes"][..],
+        ),
+        (
+            "[camera]\nobserver = \"falling\"\nposition = [0.0, 0.0, -0.5]\n[physics]\ngravity = false\n",
+            &["camera.position", "gravity off"][..],
+        ),
+    ] {
+        let e = refused_early(render_scene(&dir, toml, &[]));
+        assert!(words.iter().all(|w| e.contains(w)), "{toml}: {e}");
+    }
+    assert!(std::fs::read_dir(dir.path()).expect("listing").count() == 1);
 }

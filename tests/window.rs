@@ -83,6 +83,11 @@ fn window_id(child: &mut Child) -> String {
 
 /// Opens the window (it runs until Esc, or 100,000 frames).
 fn spawn_window(shot: &std::path::Path) -> Child {
+    spawn_window_with(shot, &[])
+}
+
+/// The same, with extra arguments.
+fn spawn_window_with(shot: &std::path::Path, extra: &[&std::ffi::OsStr]) -> Child {
     let mut c = blackhole();
     c.env("DISPLAY", display())
         .args([
@@ -96,6 +101,7 @@ fn spawn_window(shot: &std::path::Path) -> Child {
         ])
         .args(["--frames", "100000", "--screenshot"])
         .arg(shot)
+        .args(extra)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped());
     c.spawn().expect("the blackhole binary runs")
@@ -405,4 +411,45 @@ fn a_thousand_window_frames_hold_memory_flat() {
         "resident memory grew by {:.1} MB",
         end - start
     );
+}
+
+/// F drops the camera from the view into the hole (a one-second fall here)
+/// through the horizon: the view down the fall is black across its middle
+/// (the region whose light came from the other universe, and the shadow
+/// around it), where the view from outside shows the disk; F again returns.
+#[test]
+fn f_falls_through_the_horizon_and_f_again_returns() {
+    let _one = one_at_a_time();
+    let dir = scratch();
+    let scene = path_in(&dir, "scene.toml");
+    std::fs::write(&scene, "[animation]\nfall_seconds = 1.0\n").expect("writing the scene");
+    let shot = |name: &str, presses: &[&str]| {
+        let out = path_in(&dir, name);
+        let args = [std::ffi::OsStr::new("--scene"), scene.as_os_str()];
+        let mut child = spawn_window_with(&out, &args);
+        let id = window_id(&mut child);
+        press(&id, "h");
+        std::thread::sleep(Duration::from_millis(500));
+        for p in presses {
+            press(&id, p);
+            std::thread::sleep(Duration::from_millis(2500));
+        }
+        let (code, stdout, stderr) = finish(child, &id, 2);
+        assert_clean(code, &stdout, &stderr);
+        image::open(&out).expect("PNG").to_rgb8()
+    };
+    let middle = |img: &image::RgbImage| luma(img, 220, 110, 200, 140);
+    let outside = shot("outside.png", &[]);
+    let inside = shot("inside.png", &["f"]);
+    let back = shot("back.png", &["f", "f"]);
+    assert!(
+        middle(&outside) > 0.05,
+        "the disk is not in the middle outside"
+    );
+    assert!(
+        middle(&inside) < 0.01,
+        "the middle is not black after the fall: {}",
+        middle(&inside)
+    );
+    assert!(middle(&back) > 0.05, "F again did not return");
 }

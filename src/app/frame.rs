@@ -6,6 +6,7 @@
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
+use super::fall::WindowFall;
 use super::gui::Stats;
 use super::{AUTO_TARGET_MS, MAX_SAMPLES, Orbit, Running, WindowOptions};
 use crate::frame::{Frame, OutputKind};
@@ -47,6 +48,8 @@ impl Running {
             view_size: (self.view.1, self.view.2),
             samples: self.samples,
             device: renderer.device_name().to_owned(),
+            camera: super::fall::camera_status(&self.scene),
+            falling: self.fall.is_some(),
         };
         self.gui.draft.camera = self.orbit.camera();
         // The panel shows the scale in use (auto moves it).
@@ -69,6 +72,7 @@ impl Running {
             self.loaded = s.clone();
             self.scene = s;
             self.orbit = Orbit::from_camera(&self.scene.camera);
+            self.fall = None;
         } else {
             match self.gui.draft.check() {
                 Ok(()) => {
@@ -95,6 +99,19 @@ impl Running {
             if let Some(s) = scale {
                 self.scale = s;
             }
+        }
+        let key = std::mem::take(&mut self.wants_fall).then_some(self.fall.is_none());
+        match actions.fall.or(key) {
+            Some(true) => self.fall = WindowFall::start(&self.orbit, &self.scene),
+            Some(false) => {
+                if let Some(f) = self.fall.take() {
+                    self.orbit = f.before;
+                }
+            }
+            None => {}
+        }
+        if let Some(f) = &self.fall {
+            self.orbit = f.orbit_at(&self.orbit, &self.scene, Instant::now());
         }
         self.scene.camera = self.orbit.camera();
         let mut drawn = self.scene.clone();

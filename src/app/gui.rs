@@ -36,6 +36,10 @@ pub struct Stats {
     pub view_size: (u32, u32),
     pub samples: u32,
     pub device: String,
+    /// Where the camera is (app/fall.rs, `camera_status`).
+    pub camera: String,
+    /// A fall into the hole is in progress.
+    pub falling: bool,
 }
 
 /// Requests from the panel to the window.
@@ -45,6 +49,9 @@ pub struct PanelActions {
     pub load: Option<Scene>,
     /// The render scale changed (None: auto).
     pub render_scale: Option<Option<f64>>,
+    /// Start a fall into the hole from the current view (true) or return
+    /// to the view it started from (false).
+    pub fall: Option<bool>,
 }
 
 /// The egui context, its winit input state and its Vulkan renderer.
@@ -282,6 +289,27 @@ impl Gui {
             &mut self.inside,
             "let the wheel go inside the photon orbits (1.5 rs at spin 0)",
         );
+        ui.horizontal(|ui| {
+            if stats.falling {
+                if ui
+                    .button("return")
+                    .on_hover_text("back to the view the fall started from")
+                    .clicked()
+                {
+                    actions.fall = Some(false);
+                }
+            } else if ui
+                .button("fall in")
+                .on_hover_text(
+                    "drop from rest into the hole from this view, as [animation] camera = \"fall\" \
+                     does (through the horizon of a non-rotating hole)",
+                )
+                .clicked()
+            {
+                actions.fall = Some(true);
+            }
+            ui.label(&stats.camera);
+        });
         ui.separator();
         ui.horizontal(|ui| {
             ui.label("preset");

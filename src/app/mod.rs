@@ -7,6 +7,7 @@
 pub mod camera;
 mod display;
 pub mod editors;
+pub mod fall;
 mod frame;
 pub mod gui;
 
@@ -104,6 +105,8 @@ struct Running {
     /// The scene drawn (the camera follows `orbit`).
     scene: Scene,
     orbit: Orbit,
+    /// A fall into the hole in progress (the panel's "fall in").
+    fall: Option<fall::WindowFall>,
     paused: bool,
     time: f64,
     last_frame: Instant,
@@ -127,6 +130,8 @@ struct Running {
     /// The ray march's size last frame.
     render_size: (u32, u32),
     wants_f12: bool,
+    /// F pressed: fall in, or return from a fall (as the panel's button).
+    wants_fall: bool,
     started: Instant,
     /// Keys held down (to ignore duplicate presses).
     keys_down: Vec<Key>,
@@ -190,6 +195,7 @@ impl App {
         );
         Ok(Running {
             orbit: Orbit::from_camera(&scene.camera),
+            fall: None,
             loaded: scene.clone(),
             scene,
             gui,
@@ -214,6 +220,7 @@ impl App {
             view: (0, size.width.max(1), size.height.max(1)),
             render_size: (1, 1),
             wants_f12: false,
+            wants_fall: false,
             keys_down: Vec::new(),
             started: Instant::now(),
         })
@@ -363,9 +370,11 @@ impl ApplicationHandler for App {
                             r.scene = r.loaded.clone();
                             r.gui.draft = r.loaded.clone();
                             r.orbit = Orbit::from_camera(&r.loaded.camera);
+                            r.fall = None;
                             r.time = 0.0;
                         }
                         "h" | "H" => r.gui.visible = !r.gui.visible,
+                        "f" | "F" => r.wants_fall = true,
                         _ => {}
                     },
                     _ => {}

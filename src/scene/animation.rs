@@ -45,8 +45,10 @@ pub enum CameraPath {
     Keyframes,
     /// Falling radially from rest at infinity into the first hole, along the
     /// line from its centre through the camera, by the free-fall law
-    /// r^(3/2) = r0^(3/2) - (3/2) √rs τ (τ: the faller's proper time), until
-    /// 1.05 rs; `fall_seconds` of animation take it there. Pair it with
+    /// r^(3/2) = r0^(3/2) - (3/2) √rs τ (τ: the faller's proper time),
+    /// through the horizon of a non-rotating hole to `fall_end_radius`;
+    /// `fall_seconds` of animation take it there, the film's seconds in
+    /// proportion to the faller's proper time. Pair it with
     /// `observer = "falling"`.
     Fall,
 }
@@ -77,8 +79,14 @@ pub struct Animation {
     pub inclination_deg: f64,
     #[serde(rename = "keyframe")]
     pub keyframes: Vec<Keyframe>,
-    /// `camera = "fall"`: seconds of animation from the start to 1.05 rs.
+    /// `camera = "fall"`: seconds of animation from the start to the end
+    /// radius (film time in proportion to the faller's proper time).
     pub fall_seconds: f64,
+    /// `camera = "fall"`: where the fall ends, its distance from the first
+    /// hole's centre in rs (None: [`FALL_END_DEFAULT`] for a non-rotating
+    /// hole, inside its horizon; [`FALL_END_SPINNING`] times the horizon's
+    /// distance for a spinning one, whose interior is not drawn yet).
+    pub fall_end_radius: Option<f64>,
     /// Show the disk as it was when its light left it (one hole): each
     /// point's time is the frame's time less the light's travel time along
     /// its path (one second of animation is one rs/c x `speed`).
@@ -100,22 +108,61 @@ impl Default for Animation {
             inclination_deg: 3.0,
             keyframes: Vec::new(),
             fall_seconds: 10.0,
+            fall_end_radius: None,
             light_travel_time: false,
             shutter: 0.0,
         }
     }
 }
 
+/// Where a fall into a non-rotating hole ends by default (rs): the closest
+/// a falling camera may come to the singularity.
+pub const FALL_END_DEFAULT: f64 = crate::spacetime::FALLING_MIN_R;
+
+/// Where a fall toward a spinning hole ends by default: this factor times
+/// its outer horizon's distance from the centre (sqrt(r+^2 + a^2)), just
+/// outside it (the interior of a spinning hole is not drawn yet).
+pub const FALL_END_SPINNING: f64 = 1.05;
+
+/// The hole a fall heads for: its centre, its rs and its spin, and whether
+/// a camera may fall through its horizon (one non-rotating hole with
+/// gravity on; with several holes or gravity off the fall stops at
+/// [`FALL_END_SPINNING`] rs, as it always did).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FallTarget {
+    pub centre: DVec3,
+    pub rs: f64,
+    pub spin: f64,
+    pub interior: bool,
+}
+
 impl Animation {
+    /// Where a fall into `target` ends, in the scene's units.
+    pub fn fall_end(&self, target: &FallTarget) -> f64 {
+        let default = if target.interior {
+            FALL_END_DEFAULT
+        } else if target.spin == 0.0 {
+            FALL_END_SPINNING
+        } else {
+            let (r, a) = (
+                crate::spacetime::radii::horizon(1.0, target.spin.abs()),
+                0.5 * target.spin,
+            );
+            FALL_END_SPINNING * (r * r + a * a).sqrt()
+        };
+        self.fall_end_radius.unwrap_or(default) * target.rs
+    }
+
     /// Time of frame `index`, seconds.
     pub fn time_of(&self, index: u64) -> f64 {
         index as f64 / self.fps
     }
 
     /// The radius (from `centre`) of a camera that started falling at `r0`
-    /// from rest at infinity, `t` seconds into the animation.
-    pub fn fall_radius(&self, r0: f64, rs: f64, t: f64) -> f64 {
-        let r_end = (1.05 * rs).min(r0);
+    /// from rest at infinity, `t` seconds into the animation, ending at
+    /// `r_end`.
+    pub fn fall_radius(&self, r0: f64, rs: f64, r_end: f64, t: f64) -> f64 {
+        let r_end = r_end.min(r0);
         // Proper time from r0 to r_end, spread over fall_seconds.
         let tau_total = (2.0 / 3.0) * (r0.powf(1.5) - r_end.powf(1.5)) / rs.sqrt();
         let tau = (t / self.fall_seconds).clamp(0.0, 1.0) * tau_total;
@@ -124,15 +171,15 @@ impl Animation {
             .powf(2.0 / 3.0)
     }
 
-    /// The camera at time `t`; `hole` is the first hole's (centre, rs), which
-    /// the fall heads for.
-    pub fn camera_at(&self, base: &Camera, t: f64, hole: (DVec3, f64)) -> Camera {
+    /// The camera at time `t`; `hole` is the first hole, which the fall
+    /// heads for.
+    pub fn camera_at(&self, base: &Camera, t: f64, hole: &FallTarget) -> Camera {
         match self.camera {
             CameraPath::Static => *base,
             CameraPath::Fall => {
-                let (centre, rs) = hole;
+                let (centre, rs) = (hole.centre, hole.rs);
                 let rel = DVec3::from(base.position) - centre;
-                let r = self.fall_radius(rel.length(), rs, t);
+                let r = self.fall_radius(rel.length(), rs, self.fall_end(hole), t);
                 Camera {
                     position: (centre + rel.normalize_or_zero() * r).to_array(),
                     ..*base
@@ -194,10 +241,15 @@ impl Animation {
 mod tests {
     use super::*;
 
-    const HOLE: (DVec3, f64) = (DVec3::ZERO, 1.0);
+    const HOLE: &FallTarget = &FallTarget {
+        centre: DVec3::ZERO,
+        rs: 1.0,
+        spin: 0.0,
+        interior: true,
+    };
 
     #[test]
-    fn fall_follows_the_free_fall_law_to_the_horizon() {
+    fn fall_follows_the_free_fall_law_through_the_horizon() {
         let anim = Animation {
             camera: CameraPath::Fall,
             fall_seconds: 10.0,
@@ -209,7 +261,23 @@ mod tests {
         };
         let r = |t: f64| DVec3::from(anim.camera_at(&base, t, HOLE).position).length();
         assert!((r(0.0) - 20.0).abs() < 1e-12);
-        assert!((r(10.0) - 1.05).abs() < 1e-12 && (r(99.0) - 1.05).abs() < 1e-12);
+        assert!((r(10.0) - 0.05).abs() < 1e-12 && (r(99.0) - 0.05).abs() < 1e-12);
+        // Film time goes with proper time: the horizon (2/3 rs from the
+        // centre in proper time) is crossed where the closed form says,
+        // (20^1.5 - 1) / (20^1.5 - 0.05^1.5) of the way.
+        let frac = (20f64.powf(1.5) - 1.0) / (20f64.powf(1.5) - 0.05f64.powf(1.5));
+        assert!((r(10.0 * frac) - 1.0).abs() < 1e-9, "{}", r(10.0 * frac));
+        // A spinning hole's fall stops just outside its horizon: at a* =
+        // 0.9, r+ = (1 + sqrt(1 - 0.81)) / 2 rs, a = 0.45 rs.
+        let spinning = FallTarget {
+            spin: 0.9,
+            interior: false,
+            ..*HOLE
+        };
+        let p = anim.camera_at(&base, 99.0, &spinning).position;
+        let r_plus: f64 = 0.5 * (1.0 + 0.19f64.sqrt());
+        let end = 1.05 * (r_plus * r_plus + 0.45 * 0.45).sqrt();
+        assert!((DVec3::from(p).length() - end).abs() < 1e-12);
         // dr/dτ = -√(rs/r): the speed grows as it falls.
         let (a, b, c) = (r(2.0), r(5.0), r(8.0));
         assert!(a > b && b > c && (a - b) < (b - c), "{a} {b} {c}");

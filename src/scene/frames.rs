@@ -8,7 +8,7 @@ use std::ops::Range;
 use glam::DVec3;
 
 use super::locate::{Seg::Key, display_path};
-use super::{Camera, CameraPath, Scene};
+use super::{Camera, CameraPath, FallTarget, Scene};
 use crate::{Error, Result};
 
 /// The most frames one `--frames` range may hold: ten million (3.9 days at
@@ -24,11 +24,26 @@ impl Scene {
 
     /// The camera at animation time `t`, seconds.
     pub fn camera_at_time(&self, t: f64) -> Camera {
-        let hole = self
-            .black_holes
-            .first()
-            .map_or((DVec3::ZERO, 1.0), |h| (DVec3::from(h.position), h.rs));
-        self.animation.camera_at(&self.camera, t, hole)
+        self.animation
+            .camera_at(&self.camera, t, &self.fall_target())
+    }
+
+    /// The hole a fall heads for: the first.
+    pub fn fall_target(&self) -> FallTarget {
+        self.black_holes.first().map_or(
+            FallTarget {
+                centre: DVec3::ZERO,
+                rs: 1.0,
+                spin: 0.0,
+                interior: false,
+            },
+            |h| FallTarget {
+                centre: DVec3::from(h.position),
+                rs: h.rs,
+                spin: h.spin,
+                interior: self.physics.gravity && self.black_holes.len() == 1 && h.spin == 0.0,
+            },
+        )
     }
 
     /// Checks the camera of every frame in `range` (those after the camera

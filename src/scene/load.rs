@@ -53,8 +53,13 @@ pub const PRESETS: &[(&str, &str, &str)] = &[
     ),
     (
         "falling",
-        "falling straight in from rest at infinity (observer and animation)",
+        "falling from rest at infinity through the horizon to 0.05 rs (fisheye down the fall)",
         include_str!("presets/falling.toml"),
+    ),
+    (
+        "plunge",
+        "falling into the gargantua hole (a* = 0.998) to just outside its horizon",
+        include_str!("presets/plunge.toml"),
     ),
     (
         "gargantua",

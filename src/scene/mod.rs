@@ -9,7 +9,7 @@ mod locate;
 pub mod schema;
 mod validate;
 
-pub use animation::{Animation, CameraPath, Keyframe};
+pub use animation::{Animation, CameraPath, FallTarget, Keyframe};
 pub use frames::MAX_SEQUENCE_FRAMES;
 pub use load::{PRESETS, preset_names};
 pub use schema::*;

@@ -377,6 +377,29 @@ impl Scene {
             "must be between -90 and 90 (the camera's up is +y)",
         )?;
         positive(&key("fall_seconds"), a.fall_seconds)?;
+        if let Some(end) = a.fall_end_radius {
+            positive(&key("fall_end_radius"), end)?;
+            let target = self.fall_target();
+            let horizon = crate::spacetime::radii::horizon(1.0, target.spin.abs());
+            rule(
+                target.spin == 0.0 || end > 1.01 * horizon,
+                &key("fall_end_radius"),
+                end,
+                format!(
+                    "is inside the spinning hole's horizon (r+ = {horizon:.4} rs): a fall toward \
+                     a spinning hole ends outside it (its interior is not drawn yet)"
+                ),
+            )?;
+            rule(
+                !target.interior || end >= FALLING_MIN_R,
+                &key("fall_end_radius"),
+                end,
+                format!(
+                    "must be at least {FALLING_MIN_R} rs: closer to the singularity the light \
+                     paths lose the accuracy the renderer promises (docs/inside-the-horizon.md)"
+                ),
+            )?;
+        }
         rule(
             a.camera != CameraPath::Keyframes || !a.keyframes.is_empty(),
             &key("camera"),

@@ -198,3 +198,28 @@ pub fn render_aov_with(
     assert_eq!(gpu.dimensions(), (width, height));
     (blackhole::Scene::from_toml(toml, "scene").unwrap(), gpu)
 }
+
+/// A command that must be refused before the GPU starts: a device name no
+/// device has makes any GPU work fail with a different message.
+pub fn refused_early(mut c: Command) -> String {
+    c.env("BLACKHOLE_DEVICE", "no-such-device-here");
+    let (code, stdout, stderr) = run(c);
+    assert_eq!(code, 2, "exit code\nstdout:\n{stdout}\nstderr:\n{stderr}");
+    assert!(
+        !stderr.contains("no-such-device-here"),
+        "refused only after looking for a GPU:\n{stderr}"
+    );
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.starts_with("error:")).collect();
+    assert_eq!(errors.len(), 1, "one error line:\n{stderr}");
+    errors[0].to_string()
+}
+
+pub fn render_scene(dir: &tempfile::TempDir, toml: &str, extra: &[&str]) -> Command {
+    let scene = path_in(dir, "scene.toml");
+    std::fs::write(&scene, toml).expect("writing the scene");
+    let mut c = blackhole();
+    c.args(["render", "--width", "64", "--height", "36", "--scene"])
+        .arg(&scene)
+        .args(extra);
+    c
+}
