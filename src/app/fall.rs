@@ -36,7 +36,7 @@ impl WindowFall {
     /// A fall from `orbit`'s camera into the scene's first hole; None
     /// without a hole.
     pub fn start(orbit: &Orbit, scene: &Scene) -> Option<WindowFall> {
-        let target = scene.fall_target();
+        let target = scene.fall_target_as(ObserverKind::Falling);
         scene.black_holes.first()?;
         let rel = DVec3::from(orbit.camera().position) - target.centre;
         Some(WindowFall {
@@ -52,7 +52,7 @@ impl WindowFall {
     /// say (an orbit of [`LOOK`] rs around the point it looks at: at the
     /// start, the hole).
     pub fn orbit_at(&self, orbit: &Orbit, scene: &Scene, now: Instant) -> Orbit {
-        let target = scene.fall_target();
+        let target = scene.fall_target_as(ObserverKind::Falling);
         let t = now.duration_since(self.began).as_secs_f64();
         let anim = &scene.animation;
         let r = anim.fall_radius(self.r0, target.rs, anim.fall_end(&target), t);

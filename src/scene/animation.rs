@@ -125,9 +125,10 @@ pub const FALL_END_DEFAULT: f64 = crate::spacetime::FALLING_MIN_R;
 pub const FALL_END_SPINNING: f64 = 1.05;
 
 /// The hole a fall heads for: its centre, its rs and its spin, and whether
-/// a camera may fall through its horizon (one non-rotating hole with
-/// gravity on; with several holes or gravity off the fall stops at
-/// [`FALL_END_SPINNING`] rs, as it always did).
+/// the camera may fall through its horizon (a falling observer around one
+/// non-rotating hole with gravity on; any other observer, several holes or
+/// gravity off: the fall stops at [`FALL_END_SPINNING`] rs, as it always
+/// did).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FallTarget {
     pub centre: DVec3,

@@ -9,6 +9,7 @@ use glam::DVec3;
 
 use super::locate::{Seg::Key, display_path};
 use super::{Camera, CameraPath, FallTarget, Scene};
+use crate::physics::observer::ObserverKind;
 use crate::{Error, Result};
 
 /// The most frames one `--frames` range may hold: ten million (3.9 days at
@@ -28,8 +29,14 @@ impl Scene {
             .camera_at(&self.camera, t, &self.fall_target())
     }
 
-    /// The hole a fall heads for: the first.
+    /// The hole a fall of the scene's camera heads for: the first.
     pub fn fall_target(&self) -> FallTarget {
+        self.fall_target_as(self.camera.observer)
+    }
+
+    /// The same for a camera held by `observer`: only a falling one goes
+    /// through the horizon (of one non-rotating hole with gravity on).
+    pub fn fall_target_as(&self, observer: ObserverKind) -> FallTarget {
         self.black_holes.first().map_or(
             FallTarget {
                 centre: DVec3::ZERO,
@@ -41,7 +48,10 @@ impl Scene {
                 centre: DVec3::from(h.position),
                 rs: h.rs,
                 spin: h.spin,
-                interior: self.physics.gravity && self.black_holes.len() == 1 && h.spin == 0.0,
+                interior: observer == ObserverKind::Falling
+                    && self.physics.gravity
+                    && self.black_holes.len() == 1
+                    && h.spin == 0.0,
             },
         )
     }
