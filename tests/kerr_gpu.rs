@@ -171,6 +171,9 @@ pub fn gpu_kerr_aov_matches_the_f64_closed_form() {
     // inside the ergoregion; every observer.
     let toward = "look_at = [0.0, 0.0, 0.0]";
     let outward = "look_at = [3.0, 0.5, 5.0]";
+    // Inside the ergoregion, looking the way the hole turns: the disk (half
+    // of it through photons of E < 0) and the shadow, hardly any sky.
+    let with_the_spin = "look_at = [-1.0, -0.3, -2.0]";
     for (spin, position, observer, aim) in [
         (0.9, [2.0, 3.0, -20.0], "zamo", toward),
         (0.998, [0.0, 1.0, -15.0], "static", toward),
@@ -187,6 +190,17 @@ pub fn gpu_kerr_aov_matches_the_f64_closed_form() {
         // I_phi's 32-bit closed forms were off by up to 1e-4 rad here (the
         // escape's I_phi is now taken in 64 bits: kerr.glsl).
         (0.998, [0.8, 0.1, 0.2], "zamo", outward),
+        // Boyer-Lindquist r = 0.74 rs, just above the disk, inside the
+        // ergoregion of a* = 0.99, looking past the hole the way it turns:
+        // 47 % of the frame is disk seen through photons of E < 0, which
+        // the renderer once drew as the shadow.
+        (0.99, [0.0, 0.1, -0.885], "zamo", with_the_spin),
+        (
+            0.998,
+            [0.4, -0.05, -0.7],
+            "zamo",
+            "look_at = [2.0, 0.2, -3.0]",
+        ),
     ] {
         let mut f = compare(spin, position, observer, aim, true);
         let (dir, radius, g) = (p99(&mut f.dir), p99(&mut f.radius), p99(&mut f.g));
@@ -201,10 +215,13 @@ pub fn gpu_kerr_aov_matches_the_f64_closed_form() {
         // Every view has escaping rays, and all but the one looking away
         // from the hole its shadow.
         assert!(
-            f.outcomes[0] > 0 && (f.outcomes[1] > 0 || aim == outward),
+            (f.outcomes[0] > 0 || aim == with_the_spin) && (f.outcomes[1] > 0 || aim == outward),
             "{:?}",
             f.outcomes
         );
+        if aim == with_the_spin {
+            assert!(3 * f.outcomes[2] > f.rays, "the disk: {:?}", f.outcomes);
+        }
     }
 }
 

@@ -58,7 +58,9 @@ def read_exr(path):
 
 
 def compare_png(a, b):
-    d = np.abs(np.asarray(Image.open(a)).astype(int) - np.asarray(Image.open(b)).astype(int)).max(-1)
+    # (RGBA both: a fisheye's PNG has alpha, a pinhole's not.)
+    rgba = lambda f: np.asarray(Image.open(f).convert("RGBA")).astype(int)
+    d = np.abs(rgba(a) - rgba(b)).max(-1)
     frac = (d > 1).mean()
     return frac <= 0.001, f"max diff {d.max():3d}, >1 level {100 * frac:.4f} %, identical {100 * (d == 0).mean():.3f} %"
 

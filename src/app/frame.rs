@@ -41,16 +41,8 @@ impl Running {
         let (w, h) = (image.desc.width, image.desc.height);
 
         // The panel edits a draft; apply it only when it validates.
-        let stats = Stats {
-            fps: self.fps,
-            timings: self.timings.clone(),
-            render_size: self.render_size,
-            view_size: (self.view.1, self.view.2),
-            samples: self.samples,
-            device: renderer.device_name().to_owned(),
-            camera: super::fall::camera_status(&self.scene),
-            falling: self.fall.is_some(),
-        };
+        let device = renderer.device_name().to_owned();
+        let stats = self.stats(device);
         self.gui.draft.camera = self.orbit.camera();
         // The panel shows the scale in use (auto moves it).
         self.gui.auto_scale = self.auto_scale;
@@ -86,33 +78,14 @@ impl Running {
                 Err(e) => self.gui.error = Some(e.to_string()),
             }
         }
-        // A sky image that cannot be read is an error in the panel, not the
-        // end of the program: keep the scene that worked.
-        if let Err(e) = renderer.prepare_scene(&self.scene) {
-            self.gui.error = Some(e.to_string());
-            self.scene = previous;
-            self.gui.draft = self.scene.clone();
-            renderer.prepare_scene(&self.scene)?;
-        }
+        self.prepare(previous)?;
         if let Some(scale) = actions.render_scale {
             self.auto_scale = scale.is_none();
             if let Some(s) = scale {
                 self.scale = s;
             }
         }
-        let key = std::mem::take(&mut self.wants_fall).then_some(self.fall.is_none());
-        match actions.fall.or(key) {
-            Some(true) => self.fall = WindowFall::start(&self.orbit, &self.scene),
-            Some(false) => {
-                if let Some(f) = self.fall.take() {
-                    self.orbit = f.before;
-                }
-            }
-            None => {}
-        }
-        if let Some(f) = &self.fall {
-            self.orbit = f.orbit_at(&self.orbit, &self.scene, Instant::now());
-        }
+        self.step_fall(actions.fall);
         self.scene.camera = self.orbit.camera();
         let mut drawn = self.scene.clone();
         drawn.time = self.time;
@@ -151,6 +124,55 @@ impl Running {
             self.save_view()?;
         }
         Ok(())
+    }
+
+    /// The renderer made ready for the scene. A sky image that cannot be
+    /// read is an error in the panel, not the end of the program: the scene
+    /// that worked (`previous`) is kept.
+    fn prepare(&mut self, previous: Scene) -> Result<()> {
+        let renderer = self
+            .renderer
+            .as_mut()
+            .ok_or_else(|| Error::Other("renderer already shut down".into()))?;
+        if let Err(e) = renderer.prepare_scene(&self.scene) {
+            self.gui.error = Some(e.to_string());
+            self.scene = previous;
+            self.gui.draft = self.scene.clone();
+            renderer.prepare_scene(&self.scene)?;
+        }
+        Ok(())
+    }
+
+    /// What the panel shows of the window's state.
+    fn stats(&self, device: String) -> Stats {
+        Stats {
+            fps: self.fps,
+            timings: self.timings.clone(),
+            render_size: self.render_size,
+            view_size: (self.view.1, self.view.2),
+            samples: self.samples,
+            device,
+            camera: super::fall::camera_status(&self.scene),
+            falling: self.fall.is_some(),
+        }
+    }
+
+    /// The fall into the hole (app/fall.rs): started or ended by the panel
+    /// (`asked`) or F, and the orbit moved along it.
+    fn step_fall(&mut self, asked: Option<bool>) {
+        let key = std::mem::take(&mut self.wants_fall).then_some(self.fall.is_none());
+        match asked.or(key) {
+            Some(true) => self.fall = WindowFall::start(&self.orbit, &self.scene),
+            Some(false) => {
+                if let Some(f) = self.fall.take() {
+                    self.orbit = f.before;
+                }
+            }
+            None => {}
+        }
+        if let Some(f) = &self.fall {
+            self.orbit = f.orbit_at(&self.orbit, &self.scene, Instant::now());
+        }
     }
 
     /// The clock: the frame time's running mean, the scene's time (unless

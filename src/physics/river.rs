@@ -109,6 +109,7 @@ pub fn trace_rain_to(rs: f64, x0: DVec3, d: DVec3, disk: Option<RiverDisk>) -> R
         let h = 2e-3 * r / speed;
         let (nx, np) = rk4(&deriv, x, p, h);
         if let Some(disk) = disk
+            && x.y != 0.0
             && (x.y > 0.0) != (nx.y > 0.0)
         {
             let (mut lo, mut hi) = (0.0, h);

@@ -112,11 +112,16 @@ struct KerrCamera {
     kreal alpha, omega;  // the ZAMO's lapse and angular velocity
     kreal lam, eta, theta_o;
     float s_r, s_th;
+    float turn;          // the sign of the photon's energy E (see kerr_camera)
 };
 
 // The camera at rel (from the hole) and the photon arriving along d (the
-// ZAMO's frame, world axes). False where E <= 0: such a photon cannot come
-// from infinity.
+// ZAMO's frame, world axes). A photon with E < 0 (inside the ergoregion)
+// keeps lambda = L / E and eta = Q / E^2, finite, and the same r and theta
+// motion per unit |E| of Mino time; its azimuth and time run the other way
+// along the backward ray (turn = -1), and it cannot have come from
+// infinity (the disk where it lies inside the ergoregion, or the horizon).
+// False only at E = 0 exactly, where lambda and eta are unbounded.
 bool kerr_camera(vec3 rel, vec3 d, out KerrCamera k) {
     vec3 e1 = P.disk.e1, nrm = P.disk.normal, e2 = P.disk.e2;
     kreal a = kerr_spin();
@@ -163,7 +168,8 @@ bool kerr_camera(vec3 rel, vec3 d, out KerrCamera k) {
     k.s_r = dr < 0.0 ? -1.0 : 1.0;
     k.s_th = dt < 0.0 ? -1.0 : 1.0;
     k.theta_o = (pth / en) * (pth / en);
-    return en > 0.0;
+    k.turn = en < 0.0 ? -1.0 : 1.0;
+    return en != 0.0;
 }
 
 // The first of the disk's crossings from the n-th on (an arithmetic
@@ -222,7 +228,7 @@ Hit metric_trace(vec3 x, vec3 d) {
     vec3 e1 = P.disk.e1, nrm = P.disk.normal, e2 = P.disk.e2;
     vec3 rel = x - P.metric.holes[0].xyz;
     KerrCamera cam;
-    if (!kerr_camera(rel, d, cam)) return hit;  // E <= 0: cannot come from infinity
+    if (!kerr_camera(rel, d, cam)) return hit;  // E = 0 exactly: the edge between the signs
     kreal lam = cam.lam, eta = cam.eta;
     KerrRadial rad = kerr_radial(cam.a, lam, eta, cam.r, cam.s_r);
     KerrAngular ang = kerr_angular(cam.a, lam, eta, cam.c, cam.theta_o, cam.s_th);
@@ -243,7 +249,7 @@ Hit metric_trace(vec3 x, vec3 d) {
     // The shifts are measured by the camera's ZAMO (disk.glsl, volume.glsl).
     kerr_zamo_g = float((1.0 - cam.omega * lam) / cam.alpha);
     observer_lapse = float(cam.alpha);
-    if (volumetric() && eta > 0.0 && rad.kcase != 4) {
+    if (volumetric() && eta > 0.0 && rad.kcase != 4 && cam.turn > 0.0) {
         bool in_slab = abs(dot(rel, nrm)) < 1.5 * P.volume.half_height;
         kerr_volume(rad, ang, af, lamf, float(eta), float(cam.cp), float(cam.sp), to_m, in_slab, hit);
         if (hit.trans < 0.003) {
@@ -263,7 +269,8 @@ Hit metric_trace(vec3 x, vec3 d) {
         KerrPoint end = KerrPoint(0.0, 1.0, 0.0, 1.0, 0.0, false);
         bool on_disk = DISK_KIND == DISK_THIN && eta > 0.0 && rad.kcase != 4
                     && kerr_disk_crossing(rad, ang, to_m, from, t, rc, end);
-        if (!on_disk && rad.captured) return hit;
+        // (E < 0: not from the sky.)
+        if (!on_disk && (rad.captured || cam.turn < 0.0)) return hit;
         if (!on_disk) end = rad.end;
         if (KERR_COMMON_ONLY && af != 0.0 && !(rad.kcase == 2 && rad.rh.x <= rad.r4)) {
             hit.deferred = true;  // I_phi needs kerr_j: to the second pass
@@ -271,6 +278,7 @@ Hit metric_trace(vec3 x, vec3 d) {
         }
         // The azimuth there: phi = phi_o + dphi.
         vec2 ct = kerr_end(rad, ang, af, lamf, float(eta), t, end);
+        ct.y *= cam.turn;
         vec2 cs = cos_sin_precise(ct.y);
         float cph = cpf * cs.x - spf * cs.y, sph = spf * cs.x + cpf * cs.y;
         if (on_disk) {
@@ -280,7 +288,7 @@ Hit metric_trace(vec3 x, vec3 d) {
             float g = kerr_disk_g(rc, af, lamf);
             float delay = 0.0;
 #ifndef GEODESIC_AOV
-            if (LIGHT_DELAY) delay = kerr_travel_time(rad, ang, af, lamf, t) / to_m;
+            if (LIGHT_DELAY) delay = cam.turn * kerr_travel_time(rad, ang, af, lamf, t) / to_m;
             if (kerr_disk_light(hit, stop, rc, to_m, pos, g, delay) < 1.0) continue;
 #endif
             hit.outcome = OUT_DISK;

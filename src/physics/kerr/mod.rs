@@ -21,6 +21,7 @@ pub mod elliptic;
 pub mod frame;
 pub mod mino;
 pub mod radial;
+pub mod schild;
 
 use std::f64::consts::PI;
 
@@ -77,7 +78,8 @@ pub const MAX_CROSSINGS: u32 = 8;
 pub fn trace_zamo(position: DVec3, d: DVec3, spin: f64, disk: Option<KerrDisk>) -> KerrRay {
     let a = spin;
     let cc = Constants::of(2.0 * position, d, a);
-    if cc.energy <= 0.0 {
+    if cc.energy == 0.0 {
+        // lambda and eta unbounded: the edge between the signs (a null set).
         return KerrRay {
             outcome: KerrOutcome::Captured,
             case: 0,
@@ -86,6 +88,11 @@ pub fn trace_zamo(position: DVec3, d: DVec3, spin: f64, disk: Option<KerrDisk>) 
         };
     }
     let (lambda, eta, f) = (cc.lambda, cc.eta, cc.frame);
+    // A photon with E < 0 (inside the ergoregion) runs the same r and theta
+    // motion in Mino time per unit |E|, but its azimuth turns the other way
+    // along the backward ray: phi = phi_o + I_phi + lambda G_phi. It cannot
+    // have come from infinity.
+    let turn = cc.energy.signum();
     let rad = Radial::new(a, lambda, eta, f.r, cc.s_r);
     let ray = |outcome| KerrRay {
         outcome,
@@ -108,7 +115,7 @@ pub fn trace_zamo(position: DVec3, d: DVec3, spin: f64, disk: Option<KerrDisk>) 
                 break;
             }
             if (r_in..=r_out).contains(&rc) {
-                let phi_bl = f.phi - rad.i_phi(tc) - ang.lambda_g_phi(lambda, tc);
+                let phi_bl = f.phi - turn * (rad.i_phi(tc) + ang.lambda_g_phi(lambda, tc));
                 return ray(KerrOutcome::Disk {
                     r: rc / 2.0,
                     phi: (-phi_bl.sin()).atan2(phi_bl.cos()),
@@ -118,7 +125,7 @@ pub fn trace_zamo(position: DVec3, d: DVec3, spin: f64, disk: Option<KerrDisk>) 
             }
         }
     }
-    if rad.captured {
+    if rad.captured || turn < 0.0 {
         return ray(KerrOutcome::Captured);
     }
     let t = rad.tau_end;
@@ -159,6 +166,18 @@ pub fn disk_g(r: f64, a: f64, lambda: f64, alpha: f64, omega: f64) -> f64 {
     let gpp = ((r * r + a * a).powi(2) - a * a * (r * r - 2.0 * r + a * a)) / (r * r);
     let ut = 1.0 / (-(gtt + 2.0 * gtp * om + gpp * om * om)).sqrt();
     ((1.0 - omega * lambda) / alpha) / (ut * (1.0 - om * lambda))
+}
+
+/// The same redshift from the photon's energy and angular momentum (per
+/// unit of the frequency the camera sees), any sign: 1 / (u^t (E - Omega
+/// L)) for the prograde Keplerian emitter at r (M = 1).
+pub fn disk_g_of_constants(r: f64, a: f64, energy: f64, l: f64) -> f64 {
+    let om = 1.0 / (r.powf(1.5) + a);
+    let gtt = -(1.0 - 2.0 / r);
+    let gtp = -2.0 * a / r;
+    let gpp = ((r * r + a * a).powi(2) - a * a * (r * r - 2.0 * r + a * a)) / (r * r);
+    let ut = 1.0 / (-(gtt + 2.0 * gtp * om + gpp * om * om)).sqrt();
+    1.0 / (ut * (energy - om * l))
 }
 
 /// Traces the pixel direction `d` (unit, the observer's frame, hole-frame
