@@ -143,19 +143,107 @@ fn phi_shift(r: f64, a: f64) -> f64 {
     a / (rp - rm) * ((r - rp) / (r - rm)).abs().ln()
 }
 
+/// A photon's Boyer-Lindquist covector per unit of the frequency its
+/// observer sees: p_t = -energy, p_r, p_theta, p_phi.
+#[derive(Clone, Copy, Debug)]
+struct Photon {
+    energy: f64,
+    p_r: f64,
+    p_th: f64,
+    p_phi: f64,
+}
+
+/// The photon seen along the unit direction `d` by the ZAMO of frame `f`:
+/// k = e_t - d in its tetrad.
+fn zamo_photon(f: &LocalFrame, d: DVec3) -> Photon {
+    let (dr, dth, dph) = (d.dot(f.e_r), d.dot(f.e_theta), d.dot(f.e_phi));
+    Photon {
+        energy: f.alpha - f.omega * f.varpi * dph,
+        p_r: -(f.sigma / f.delta).sqrt() * dr,
+        p_th: -f.sigma.sqrt() * dth,
+        p_phi: -f.varpi * dph,
+    }
+}
+
+/// The photon seen along `d` by the observer falling from rest at
+/// infinity (E = 1, L = 0, Q = 0), at `f`, outside or between the horizons:
+/// its tetrad e_theta = d_theta / sqrt(Sigma), e_phi = d_phi / sqrt(g_phiphi)
+/// and e_r orthogonal to u, e_theta and e_phi with dr(e_r) > 0 (DESIGN's
+/// falling frame); k = u - d. The pixel's components come through the flat
+/// oblate triad, as for every observer.
+fn falling_photon(f: &LocalFrame, d: DVec3, a: f64) -> Photon {
+    let (r, s2) = (f.r, f.sin_theta * f.sin_theta);
+    let (sigma, delta) = (f.sigma, f.delta);
+    let big_a = (r * r + a * a).powi(2) - a * a * delta * s2;
+    // Boyer-Lindquist metric (t, r, theta, phi), nonzero parts.
+    let (g_tt, g_tp, g_pp) = (
+        -(1.0 - 2.0 * r / sigma),
+        -2.0 * a * r * s2 / sigma,
+        big_a * s2 / sigma,
+    );
+    let (g_rr, g_hh) = (sigma / delta, sigma);
+    // u: u_t = -1, u_r from the geodesic, dr/dtau = -sqrt(2 r (r^2 + a^2)) / Sigma.
+    let ur_up = -(2.0 * r * (r * r + a * a)).sqrt() / sigma;
+    let u_r = g_rr * ur_up;
+    let det = g_tt * g_pp - g_tp * g_tp;
+    let (u_t_up, u_p_up) = (-g_pp / det, g_tp / det); // g^tt (-1), g^tphi (-1)
+    // e_r = c (u_r d_t + d_r - u_r (g_tphi / g_phiphi) d_phi), normalised.
+    let (ct, cp) = (u_r, -u_r * g_tp / g_pp);
+    let norm = (ct * ct * g_tt + 2.0 * ct * cp * g_tp + cp * cp * g_pp + g_rr).sqrt();
+    let e_r = [ct / norm, 1.0 / norm, 0.0, cp / norm];
+    let (dr, dth, dph) = (d.dot(f.e_r), d.dot(f.e_theta), d.dot(f.e_phi));
+    // k^mu = u^mu - d_r e_r - d_theta e_theta - d_phi e_phi.
+    let k = [
+        u_t_up - dr * e_r[0],
+        ur_up - dr * e_r[1],
+        -dth / g_hh.sqrt(),
+        u_p_up - dr * e_r[3] - dph / g_pp.sqrt(),
+    ];
+    Photon {
+        energy: -(g_tt * k[0] + g_tp * k[3]),
+        p_r: g_rr * k[1],
+        p_th: g_hh * k[2],
+        p_phi: g_tp * k[0] + g_pp * k[3],
+    }
+}
+
+/// Who holds the camera of [`trace_schild`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SchildObserver {
+    Zamo,
+    /// Falling from rest at infinity: outside or between the horizons.
+    Falling,
+}
+
 /// The backward ray of a ZAMO camera at `position` (r_s, hole frame) along
 /// the unit direction `d` (the ZAMO's frame, hole-frame axes through the
 /// flat triad), spin `spin`, to the sky, the horizon or the thin `disk`.
 pub fn trace_schild(position: DVec3, d: DVec3, spin: f64, disk: Option<KerrDisk>) -> KerrOutcome {
+    trace_schild_as(SchildObserver::Zamo, position, d, spin, disk).unwrap_or(KerrOutcome::Captured)
+}
+
+/// The same for a camera of `observer`; a falling camera may stand between
+/// the horizons, and then None is light from the other universe (the
+/// backward ray runs into the horizon it cannot cross in these ingoing
+/// coordinates: that of the eternal hole's second exterior).
+pub fn trace_schild_as(
+    observer: SchildObserver,
+    position: DVec3,
+    d: DVec3,
+    spin: f64,
+    disk: Option<KerrDisk>,
+) -> Option<KerrOutcome> {
     let a = spin;
     let f = LocalFrame::at(2.0 * position, a);
     let d = d.normalize();
-    let (dr, dth, dph) = (d.dot(f.e_r), d.dot(f.e_theta), d.dot(f.e_phi));
-    // The photon's covector, k = e_t - d in the ZAMO's frame (its energy 1).
-    let energy = f.alpha - f.omega * f.varpi * dph;
-    let p_phi = -f.varpi * dph;
-    let p_th = -f.sigma.sqrt() * dth;
-    let p_r = -(f.sigma / f.delta).sqrt() * dr + (2.0 * f.r * energy - a * p_phi) / f.delta;
+    let ph = match observer {
+        SchildObserver::Zamo => zamo_photon(&f, d),
+        SchildObserver::Falling => falling_photon(&f, d, a),
+    };
+    let (energy, p_phi, p_th) = (ph.energy, ph.p_phi, ph.p_th);
+    // Ingoing: p_r picks up -p_t 2r / Delta - p_phi a / Delta.
+    let p_r = ph.p_r + (2.0 * f.r * energy - a * p_phi) / f.delta;
+    let horizon = r_horizon(a);
     // Position and the Jacobian of (X, Y, Z) in (r, theta, Phi).
     let big_phi = f.phi + phi_shift(f.r, a);
     let (st, ct) = (f.sin_theta, f.cos_theta);
@@ -172,21 +260,28 @@ pub fn trace_schild(position: DVec3, d: DVec3, spin: f64, disk: Option<KerrDisk>
     let jt = glam::DMat3::from_cols(d_r, d_th, d_ph).transpose();
     let p0 = jt.inverse() * DVec3::new(p_r, p_th, p_phi);
     let p_t = -energy;
-    let horizon = r_horizon(a);
     let (mut x, mut p) = (x0, p0);
+    // Between the horizons the backward ray leaves through one of them: the
+    // future horizon of our exterior, where these ingoing coordinates are
+    // regular and it crosses at the radial rate P(r+) / Sigma, or that of
+    // the eternal hole's second exterior, at their edge, which it nears as
+    // its rate there falls to zero: P(r+) = E (r+^2 + a^2) - a L <= 0.
+    if f.r < horizon && energy * (horizon * horizon + a * a) - a * p_phi <= 0.0 {
+        return None;
+    }
     for _ in 0..400_000 {
         let r = bl_r(x, a);
         let (vx, _) = backward(x, p, p_t, a);
         if r > 1e6 {
             let v = vx.normalize();
-            return KerrOutcome::Escaped(DVec3::new(v.x, v.z, -v.y));
+            return Some(KerrOutcome::Escaped(DVec3::new(v.x, v.z, -v.y)));
         }
-        // Moving inward within 1% of the horizon: the photon came out of it
-        // (these ingoing coordinates reach the past horizon only in the
-        // limit, winding in Phi; a path turns around that close only where
-        // P(r+) = E (r+^2 + a^2) - a L nearly vanishes, an edge).
-        if r < horizon * 1.01 && vx.dot(x) < 0.0 {
-            return KerrOutcome::Captured;
+        // Moving inward within 1% of the horizon from outside: the photon
+        // came out of it (these ingoing coordinates reach the past horizon
+        // only in the limit, winding in Phi; a path turns around that close
+        // only where P(r+) = E (r+^2 + a^2) - a L nearly vanishes, an edge).
+        if r > horizon && r < horizon * 1.01 && vx.dot(x) < 0.0 {
+            return Some(KerrOutcome::Captured);
         }
         let h = 2e-3 * r.min((r - horizon).max(1e-3) * 50.0) / vx.length().max(1e-300);
         let (nx, np) = rk4(x, p, p_t, a, h);
@@ -208,17 +303,17 @@ pub fn trace_schild(position: DVec3, d: DVec3, spin: f64, disk: Option<KerrDisk>
             let rc = bl_r(cx, a);
             if (2.0 * disk.inner..=2.0 * disk.outer).contains(&rc) {
                 let phi_bl = cx.y.atan2(cx.x) - a.atan2(rc) - phi_shift(rc, a);
-                return KerrOutcome::Disk {
+                return Some(KerrOutcome::Disk {
                     r: rc / 2.0,
                     phi: (-phi_bl.sin()).atan2(phi_bl.cos()),
                     g: disk_g_of_constants(rc, a, energy, p_phi),
                     crossings_before: 0,
-                };
+                });
             }
         }
         (x, p) = (nx, np);
     }
-    KerrOutcome::Captured
+    Some(KerrOutcome::Captured)
 }
 
 #[cfg(test)]
@@ -348,5 +443,106 @@ mod tests {
             }
         }
         assert!(seen[0] > 20 && seen[1] > 20, "{seen:?}");
+    }
+
+    /// At a = 0 the Kerr-Schild integration of a falling camera's rays and
+    /// the Painleve-Gullstrand one (physics/river.rs) are two independent
+    /// formulations of the same light paths: they agree outside, at and
+    /// inside the horizon, on the sky, the disk and the other universe.
+    #[test]
+    fn falling_cameras_agree_with_the_river_at_zero_spin() {
+        use crate::physics::river::{RiverDisk, RiverOutcome, trace_rain_to};
+        let disk = KerrDisk {
+            inner: 3.0,
+            outer: 12.0,
+        };
+        let river_disk = Some(RiverDisk {
+            inner: 3.0,
+            outer: 12.0,
+        });
+        let mut seen = [0usize; 4];
+        for r in [2.5, 1.001, 0.999, 0.5, 0.1] {
+            let at = DVec3::new(0.0, 0.3 * r, -r * 0.91f64.sqrt());
+            for k in 0..150 {
+                let z = 1.0 - (f64::from(k) + 0.5) / 75.0;
+                let az = 2.399_963 * f64::from(k);
+                let s = (1.0 - z * z).sqrt();
+                let d = DVec3::new(s * az.cos(), z, s * az.sin());
+                let river = trace_rain_to(1.0, at, d, river_disk);
+                let near = trace_rain_to(1.0, at, (d + 1e-6 * DVec3::X).normalize(), river_disk);
+                if std::mem::discriminant(&near) != std::mem::discriminant(&river) {
+                    continue;
+                }
+                let got = trace_schild_as(SchildObserver::Falling, at, d, 0.0, Some(disk));
+                match (got, river) {
+                    (None, RiverOutcome::OtherUniverse) => seen[3] += 1,
+                    (Some(KerrOutcome::Captured), RiverOutcome::Captured) => seen[1] += 1,
+                    (Some(KerrOutcome::Escaped(a)), RiverOutcome::Escaped(b)) => {
+                        assert!((a - b).length() < 1e-6, "r {r} {d}: {a} vs {b}");
+                        seen[0] += 1;
+                    }
+                    (
+                        Some(KerrOutcome::Disk { r: rc, phi, g, .. }),
+                        RiverOutcome::Disk {
+                            r: r2,
+                            phi: p2,
+                            g: g2,
+                        },
+                    ) => {
+                        assert!(
+                            (rc - r2).abs() < 1e-6
+                                && (phi - p2).abs() < 1e-6
+                                && (g - g2).abs() < 1e-6,
+                            "r {r} {d}: {rc} {phi} {g} vs {r2} {p2} {g2}"
+                        );
+                        seen[2] += 1;
+                    }
+                    (a, b) => panic!("r {r} {d}: Kerr-Schild {a:?}, river {b:?}"),
+                }
+            }
+        }
+        assert!(seen.iter().all(|&n| n > 10), "{seen:?}");
+    }
+
+    /// A falling camera between the horizons of a spinning hole (the frame
+    /// of DESIGN's falling observer, built here from the metric): the
+    /// backward rays with P(r+) > 0 cross the horizon into our exterior
+    /// (these coordinates are regular there) and end at the sky or back in
+    /// the hole; those with P(r+) < 0 came from the other universe; both
+    /// kinds are seen.
+    #[test]
+    fn between_the_horizons_p_of_r_plus_decides_the_universe() {
+        let a = 0.9;
+        let rp = r_horizon(a);
+        let mut seen = [0usize; 2];
+        for at in [DVec3::new(0.0, 0.2, -0.6), DVec3::new(0.5, -0.1, 0.3)] {
+            let f = LocalFrame::at(2.0 * at, a);
+            assert!(f.r < rp && f.r > 2.0 - rp, "between the horizons: {}", f.r);
+            for k in 0..200 {
+                let z = 1.0 - (f64::from(k) + 0.5) / 100.0;
+                let az = 2.399_963 * f64::from(k);
+                let s = (1.0 - z * z).sqrt();
+                let d = DVec3::new(s * az.cos(), z, s * az.sin());
+                let ph = falling_photon(&f, d, a);
+                let big_p = ph.energy * (rp * rp + a * a) - a * ph.p_phi;
+                if big_p.abs() < 1e-2 {
+                    continue;
+                }
+                let got = trace_schild_as(SchildObserver::Falling, at, d, a, None);
+                assert_eq!(
+                    got.is_none(),
+                    big_p < 0.0,
+                    "{at} {d}: P(r+) {big_p}, {got:?}"
+                );
+                if let Some(end) = got {
+                    assert!(
+                        matches!(end, KerrOutcome::Escaped(_) | KerrOutcome::Captured),
+                        "{end:?}"
+                    );
+                }
+                seen[usize::from(big_p > 0.0)] += 1;
+            }
+        }
+        assert!(seen.iter().all(|&n| n > 20), "{seen:?}");
     }
 }
