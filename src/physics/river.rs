@@ -238,11 +238,7 @@ mod tests {
             let x0 = DVec3::new(0.0, 0.3 * r, -r * 0.91f64.sqrt());
             let obs = Observer::new(ObserverKind::Falling, x0, &[hole], DVec3::Y, true);
             for k in 0..400 {
-                // A spiral over the sphere of directions.
-                let z = 1.0 - (f64::from(k) + 0.5) / 200.0;
-                let az = 2.399_963 * f64::from(k);
-                let s = (1.0 - z * z).sqrt();
-                let d = DVec3::new(s * az.cos(), z, s * az.sin());
+                let d = crate::physics::sphere_direction(k, 400);
                 let got = trace_rain_to(rs, x0, d, river_disk);
                 if obs.energy(d) <= 0.0 {
                     assert_eq!(got, RiverOutcome::OtherUniverse, "r {r}, d {d}");
