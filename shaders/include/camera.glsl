@@ -101,15 +101,16 @@ PixelRay fisheye(uvec2 px) {
 // A falling camera's pixel direction (its own frame: the rain observer's,
 // the flat frame of Painleve-Gullstrand coordinates; src/physics/rain.rs)
 // as a coordinate direction, valid outside, at and inside the horizon
-// (RAIN_FORM: one non-rotating hole). The
-// photon arriving along -dir has E / omega = 1 + v d_r and transverse
-// momentum |d_t|; traced back it moves out at the rate v + d_r against
-// |d_t| across (the static frame's squeezed direction outside). The camera
-// measures g = omega / E of light from rest at infinity.
+// (RAIN_FORM: one non-rotating hole). The photon arriving along -dir has
+// E / omega = 1 + v d_r and transverse momentum |d_t|; traced back it moves
+// out at the rate v + d_r against |d_t| across (outside, the static frame's
+// squeezed direction). The camera measures g = omega / E of light from rest
+// at infinity.
+//
 // The camera's own place has its radial direction and speed from the host
-// in f64 (each one rounding: E = 1 + v d_r cancels where light comes from
-// below, and near the photon orbit the path's constant amplifies its
-// error twelvefold); an ODS eye off that place forms them here.
+// in f64, each one rounding (E = 1 + v d_r cancels where light comes from
+// below, and near the photon orbit the path's constant amplifies its error
+// twelvefold); an ODS eye off that place forms them here.
 vec3 rain_to_coordinate(StaticFrame frame, vec3 dir) {
     bool eye = int(P.camera.stereo) == STEREO_ODS;
     float v = eye ? sqrt(frame.fall2) : P.observer.fall_speed;
