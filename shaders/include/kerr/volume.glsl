@@ -114,8 +114,10 @@ float kerr_r_scd(KerrRadial k, vec3 e) {
     return ((k.bb * k.r2 - k.ba * k.r1) + (k.bb * k.r2 + k.ba * k.r1) * e.y) / ((k.bb - k.ba) + (k.bb + k.ba) * e.y);
 }
 
+// turn: the sign of the photon's energy (kerr_camera): with E < 0 the
+// azimuth runs the other way along the backward path.
 void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta, float cp, float sp,
-                 float to_m, bool in_slab, inout Hit hit) {
+                 float to_m, bool in_slab, float turn, inout Hit hit) {
     float H = to_m * P.volume.half_height;
     float r_far = 1.5 * to_m * P.disk.outer;
     float u_lim = 1.0 / (1.05 * to_m * P.disk.outer);
@@ -204,7 +206,7 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
         vec3 pts[5];
         k = 0;
         [[dont_unroll]] do {
-            pts[k] = kerr_world(min(rk[k], r_far), ck[k], ph[k], a, cp, sp, to_m);
+            pts[k] = kerr_world(min(rk[k], r_far), ck[k], turn * ph[k], a, cp, sp, to_m);
         } while (++k < 5);
         volume_chords(pts, lam, hit.glow, hit.trans);
         if (hit.trans < 0.003 || last) return;

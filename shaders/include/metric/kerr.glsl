@@ -249,9 +249,10 @@ Hit metric_trace(vec3 x, vec3 d) {
     // The shifts are measured by the camera's ZAMO (disk.glsl, volume.glsl).
     kerr_zamo_g = float((1.0 - cam.omega * lam) / cam.alpha);
     observer_lapse = float(cam.alpha);
-    if (volumetric() && eta > 0.0 && rad.kcase != 4 && cam.turn > 0.0) {
+    if (volumetric() && eta > 0.0 && rad.kcase != 4) {
         bool in_slab = abs(dot(rel, nrm)) < 1.5 * P.volume.half_height;
-        kerr_volume(rad, ang, af, lamf, float(eta), float(cam.cp), float(cam.sp), to_m, in_slab, hit);
+        kerr_volume(rad, ang, af, lamf, float(eta), float(cam.cp), float(cam.sp), to_m, in_slab, cam.turn,
+                    hit);
         if (hit.trans < 0.003) {
             hit.outcome = OUT_CAPTURED;  // opaque: nothing behind shows
             return hit;
