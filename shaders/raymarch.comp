@@ -125,9 +125,11 @@ vec4 path_record(Hit hit) {
 // way (glow, transmittance).
 vec3 path_color(Hit hit, Footprint fp, float pixel_angle) {
     vec3 color = vec3(0.0);
-    if (hit.outcome == OUT_ESCAPED) {
+    // (The other universe's sky, [sky] other_universe = "mirror", is a copy
+    // of ours without the grid plane.)
+    if (hit.outcome == OUT_ESCAPED || hit.far_sky) {
         color = sky_color(hit.dir, fp);
-        grid_plane(hit.pos, hit.dir, pixel_angle, color);
+        if (!hit.far_sky) grid_plane(hit.pos, hit.dir, pixel_angle, color);
         // Light from rest at infinity, as the camera sees it: brightness
         // by g^4, colour as 6500 K blackbody light's (the switch sky_shift).
         if (P.sky.shift > 0.5) {

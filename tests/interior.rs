@@ -264,6 +264,45 @@ fn frames_through_the_crossing_change_as_frames_outside_do() {
     );
 }
 
+/// Light from the other universe is black by default; `[sky] other_universe
+/// = "mirror"` follows its path on to that universe's infinity (the same
+/// closed form: the orbit's shape knows only b) and shows a copy of the sky
+/// there, ringed by the black of paths from its white hole. The AOV stays
+/// outcome 5 either way.
+#[test]
+fn the_other_universe_is_black_or_a_mirror_sky() {
+    let dir = scratch();
+    let toml = |other: &str| {
+        format!(
+            "[camera]\nposition = [0.0, 0.0, -0.5]\nlook_at = [0.0, 0.0, 0.0]\nobserver = \"falling\"\nprojection = \"fisheye\"\nvfov_deg = 200.0\n[disk]\nkind = \"none\"\n[sky]\nkind = \"checker\"\nother_universe = \"{other}\"\n"
+        )
+    };
+    let middle = |img: &image::RgbImage| {
+        let p = img.get_pixel(32, 32);
+        f64::from(p[0].max(p[1]).max(p[2])) / 255.0
+    };
+    let black = common::render_png(
+        &dir,
+        "black",
+        common::SceneSrc::Toml(&toml("black")),
+        64,
+        64,
+    );
+    let mirror = common::render_png(
+        &dir,
+        "mirror",
+        common::SceneSrc::Toml(&toml("mirror")),
+        64,
+        64,
+    );
+    assert!(middle(&black) < 0.01, "{}", middle(&black));
+    assert!(middle(&mirror) > 0.2, "{}", middle(&mirror));
+    for other in ["black", "mirror"] {
+        let (_, aov) = common::render_aov(&toml(other), 16, 16);
+        assert_eq!(aov.get_pixel(8, 8).0, [0.0, 0.0, 0.0, 5.0], "{other}");
+    }
+}
+
 // ---------------------------------------------------------------- placement
 
 #[test]

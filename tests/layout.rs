@@ -203,7 +203,7 @@ fn raymarch_params_match_the_glsl_block() {
             offset_of!(SkyParams, row1),
             offset_of!(SkyParams, shift),
             offset_of!(SkyParams, row2),
-            offset_of!(SkyParams, _pad1),
+            offset_of!(SkyParams, other),
         ],
     );
     raymarch_struct_matches(

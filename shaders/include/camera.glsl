@@ -104,8 +104,8 @@ PixelRay fisheye(uvec2 px) {
 // (RAIN_FORM: one non-rotating hole). The photon arriving along -dir has
 // E / omega = 1 + v d_r and transverse momentum |d_t|; traced back it moves
 // out at the rate v + d_r against |d_t| across (outside, the static frame's
-// squeezed direction). The camera measures g = omega / E of light from rest
-// at infinity.
+// squeezed direction). The camera measures g = omega / |E| of light from
+// rest at infinity (E < 0: the other universe's).
 //
 // The camera's own place has its radial direction and speed from the host
 // in f64, each one rounding (E = 1 + v d_r cancels where light comes from
@@ -123,7 +123,8 @@ vec3 rain_to_coordinate(StaticFrame frame, vec3 dir) {
     // No frame at rest to split the gravitational part from the rest
     // (disk_color): the camera's clock is taken as infinity's.
     observer_lapse = 1.0;
-    observer_g = en > 0.0 ? 1.0 / en : 1.0;
+    // (E < 0: the other universe's light, g against its own infinity.)
+    observer_g = 1.0 / max(abs(en), 1e-6);
     return normalize((v + dr) * rh + dt);
 }
 

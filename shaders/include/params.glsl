@@ -112,7 +112,7 @@ struct SkyParams {
     float galaxy;                        // the galaxy band
     vec3 row0;      float star_flux;     // rows of the world-to-galactic matrix; flux of a magnitude-0 star
     vec3 row1;      float shift;         // 1: shifted by the camera's g (sky_shift)
-    vec3 row2;      float pad1;
+    vec3 row2;      float other;         // 1: the other universe shows a copy of the sky
 };
 
 struct PlaneParams {

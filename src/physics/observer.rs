@@ -202,8 +202,9 @@ impl Observer {
             return 1.0;
         }
         if let Some(v) = self.rain {
+            // (E < 0: light from the other universe, against its infinity.)
             let e = 1.0 + v * d.dot(self.rhat);
-            return if e > 0.0 { 1.0 / e } else { 1.0 };
+            return 1.0 / e.abs().max(1e-6);
         }
         let doppler = if self.beta == DVec3::ZERO {
             1.0

@@ -207,6 +207,20 @@ pub enum SkyKind {
     Black,
 }
 
+/// What a camera inside a horizon sees where the light came from the other
+/// universe of the eternal hole (E <= 0).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum OtherUniverse {
+    /// Nothing: a hole formed by collapse has no other universe.
+    #[default]
+    Black,
+    /// The eternal hole's second exterior, given a copy of this sky (its
+    /// own is unknowable): the light paths there are exact, the sky a
+    /// stand-in.
+    Mirror,
+}
+
 /// The sky (celestial sphere).
 #[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
@@ -230,6 +244,8 @@ pub struct Sky {
     pub rotation_deg: f64,
     /// Catalogue sky: then its tilt about +z, degrees.
     pub tilt_deg: f64,
+    /// Inside a horizon: what the light from the other universe shows.
+    pub other_universe: OtherUniverse,
 }
 
 impl Sky {
@@ -261,6 +277,7 @@ impl Default for Sky {
             frame: crate::stars::SkyFrame::Galactic,
             rotation_deg: 20.0,
             tilt_deg: 35.0,
+            other_universe: OtherUniverse::Black,
         }
     }
 }

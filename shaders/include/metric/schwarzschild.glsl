@@ -145,9 +145,13 @@ const bool METRIC_SPLITS_RARE = false;
 
 Hit metric_trace(vec3 x, vec3 d) {
     Hit hit = hit_start(OUT_NO_STEPS, vec3(0.0), d);
-    if (RAIN_FORM && rain_energy <= 0.0) {
-        // E <= 0 inside the horizon: the light crossed the other universe's
-        // horizon into the hole, not ours (none in a hole formed by collapse).
+    // E <= 0 inside the horizon: the light crossed the other universe's
+    // horizon into the hole, not ours (none in a hole formed by collapse).
+    // Its path there is the same closed form (the orbit's shape knows only
+    // b); with a mirror sky it is followed to that universe's infinity, past
+    // no disk.
+    bool other = RAIN_FORM && rain_energy <= 0.0;
+    if (other && P.sky.other < 0.5) {
         hit.outcome = OUT_OTHER_UNIVERSE;
         hit.pos = x;
         return hit;
@@ -162,6 +166,8 @@ Hit metric_trace(vec3 x, vec3 d) {
     if (sn < 1e-7) {
         // A radial ray: straight in (captured) or straight out (escaped).
         hit.outcome = dot(d, e1) < 0.0 ? OUT_CAPTURED : OUT_ESCAPED;
+        hit.far_sky = other && hit.outcome == OUT_ESCAPED;
+        hit.outcome = other ? OUT_OTHER_UNIVERSE : hit.outcome;
         hit.pos = x;
         return hit;
     }
@@ -184,7 +190,7 @@ Hit metric_trace(vec3 x, vec3 d) {
     const int kind = DISK_KIND;
     float na = dot(e1, N), nb = dot(e2, N);
     float tilt = length(vec2(na, nb));
-    if (kind != DISK_NONE && tilt > 1e-6) {
+    if (kind != DISK_NONE && tilt > 1e-6 && !other) {
         // a cos(phi) + b sin(phi) = 0. A falling camera's, to full
         // precision: from inside the horizon the rays run out nearly
         // radially, r(phi) is steep (dr/dphi ~ r^2 / b, 500 at 12 rs), and
@@ -245,13 +251,14 @@ Hit metric_trace(vec3 x, vec3 d) {
     }
     if (path.escapes) {
         float phi = path.phi_end;
-        hit.outcome = OUT_ESCAPED;
+        hit.outcome = other ? OUT_OTHER_UNIVERSE : OUT_ESCAPED;
+        hit.far_sky = other;
         vec2 cs = cos_sin_precise(phi);
         hit.dir = cs.x * e1 + cs.y * e2;
         // A point on the asymptote: it passes the hole at distance b.
         hit.pos = c + b_imp * cross(hit.dir, nrm);
     } else {
-        hit.outcome = OUT_CAPTURED;
+        hit.outcome = other ? OUT_OTHER_UNIVERSE : OUT_CAPTURED;
     }
     return hit;
 }

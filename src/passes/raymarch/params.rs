@@ -165,7 +165,9 @@ pub struct SkyParams {
     /// 1: the sky's light shifted by the camera's g (`[physics] sky_shift`).
     pub shift: f32,
     pub row2: [f32; 3],
-    pub _pad1: f32,
+    /// 1: the other universe's light shows a copy of the sky
+    /// (`[sky] other_universe = "mirror"`).
+    pub other: f32,
 }
 
 /// `[grid_plane]`.
@@ -402,7 +404,7 @@ fn sky(scene: &Scene, frame: &FrameSpec) -> SkyParams {
         row1: v3(m.row(1)),
         shift: flag(scene.physics.sky_shift),
         row2: v3(m.row(2)),
-        _pad1: 0.0,
+        other: flag(s.other_universe == crate::scene::OtherUniverse::Mirror),
     }
 }
 
