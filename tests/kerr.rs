@@ -1140,7 +1140,7 @@ fn every_observer_and_case_matches_the_independent_reference() {
         cases[usize::from(case)] += 1;
         if case == 0 {
             // E <= 0: the reference's shortcut (drawn captured) is the rule
-            // KERR.md 2.3 withdrew. Such a photon comes from the disk or the
+            // the renderer withdrew (docs/physics.md). Such a photon comes from the disk or the
             // horizon: the closed form must say where the Kerr-Schild
             // integration (which knows nothing of E's sign) says.
             let beta = kerr::observer_velocity(observer, 2.0 * cam, a).expect("placed");
@@ -1223,7 +1223,7 @@ fn inner_radius_isco_follows_the_spin() {
 
 #[test]
 fn page_thorne_temperature_peaks_where_the_specification_says() {
-    // KERR.md 8.4: the peak of T^4 in units of the ISCO.
+    // The peak of T^4 (Page & Thorne 1974) in units of the ISCO.
     for (a, at) in [(0.0, 1.5918), (0.7, 1.5390), (0.95, 1.4455), (-0.7, 1.6114)] {
         let (r, _) = kerr::page_thorne_peak(a);
         let ratio = r / r_isco(a);

@@ -105,7 +105,7 @@ impl Constants {
     }
 }
 
-/// The camera's observer (KERR.md's observers, as velocities relative to
+/// The camera's observer (docs/physics.md's observers, as velocities relative to
 /// the ZAMO).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum KerrObserver {

@@ -168,8 +168,8 @@ fn zamo_photon(f: &LocalFrame, d: DVec3) -> Photon {
 /// The photon seen along `d` by the observer falling from rest at
 /// infinity (E = 1, L = 0, Q = 0), at `f`, outside or between the horizons:
 /// its tetrad e_theta = d_theta / sqrt(Sigma), e_phi = d_phi / sqrt(g_phiphi)
-/// and e_r orthogonal to u, e_theta and e_phi with dr(e_r) > 0 (DESIGN's
-/// falling frame); k = u - d. The pixel's components come through the flat
+/// and e_r orthogonal to u, e_theta and e_phi with dr(e_r) > 0 (the
+/// falling frame of docs/inside-the-horizon.md); k = u - d. The pixel's components come through the flat
 /// oblate triad, as for every observer.
 fn falling_photon(f: &LocalFrame, d: DVec3, a: f64) -> Photon {
     let (r, s2) = (f.r, f.sin_theta * f.sin_theta);
@@ -483,7 +483,7 @@ mod tests {
     }
 
     /// A falling camera between the horizons of a spinning hole (the frame
-    /// of DESIGN's falling observer, built here from the metric): the
+    /// of the falling observer, built here from the metric): the
     /// backward rays with P(r+) > 0 cross the horizon into our exterior
     /// (these coordinates are regular there) and end at the sky or back in
     /// the hole; those with P(r+) < 0 came from the other universe; both
