@@ -520,4 +520,38 @@ mod tests {
         }
         assert!(seen.iter().all(|&n| n > 20), "{seen:?}");
     }
+
+    /// Outside the horizon the falling frame built here from the metric is
+    /// the one the renderer uses for a falling camera (the ZAMO's frame
+    /// after aberration by the fall, physics/kerr/frame.rs): a pixel's
+    /// photon has the same covector, up to the ratio of the two observers'
+    /// frequencies (the Doppler factor), to 1e-12.
+    #[test]
+    fn the_falling_frame_outside_is_the_aberrated_zamo_frame() {
+        use crate::physics::kerr::{KerrObserver, observer_velocity, to_zamo_frame};
+        for (a, at) in [
+            (0.9, DVec3::new(1.0, 2.0, -4.0)),
+            (0.99, DVec3::new(0.0, 0.1, -0.885)),
+            (-0.5, DVec3::new(3.0, -1.0, 1.0)),
+        ] {
+            let f = LocalFrame::at(2.0 * at, a);
+            let beta = observer_velocity(KerrObserver::Falling, 2.0 * at, a).expect("outside");
+            for k in 0..50 {
+                let d = sphere_direction(k, 50);
+                let (dz, doppler) = to_zamo_frame(d, beta);
+                let z = zamo_photon(&f, dz);
+                let fall = falling_photon(&f, d, a);
+                let (mine, theirs) = (
+                    [fall.energy, fall.p_r, fall.p_th, fall.p_phi],
+                    [z.energy, z.p_r, z.p_th, z.p_phi].map(|v| v / doppler),
+                );
+                for (x, y) in mine.iter().zip(theirs) {
+                    assert!(
+                        (x - y).abs() < 1e-12 * (1.0 + y.abs()),
+                        "{a} {at} {d}: {mine:?} vs {theirs:?}"
+                    );
+                }
+            }
+        }
+    }
 }
