@@ -19,6 +19,7 @@
 pub mod angular;
 pub mod elliptic;
 pub mod frame;
+pub mod interior;
 pub mod mino;
 pub mod radial;
 pub mod schild;

@@ -391,7 +391,7 @@ pub fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
 
 /// The integral of f over [a, b] by 16-point Gauss-Legendre, halving the
 /// interval where two halves disagree with the whole by more than `tol`.
-fn adaptive_gauss(f: &dyn Fn(f64) -> f64, a: f64, b: f64, tol: f64, depth: u32) -> f64 {
+pub fn adaptive_gauss(f: &dyn Fn(f64) -> f64, a: f64, b: f64, tol: f64, depth: u32) -> f64 {
     let rule = gauss_legendre(16);
     fn gl(rule: &[(f64, f64)], f: &dyn Fn(f64) -> f64, a: f64, b: f64) -> f64 {
         let (h, c) = (0.5 * (b - a), 0.5 * (a + b));

@@ -146,11 +146,11 @@ fn phi_shift(r: f64, a: f64) -> f64 {
 /// A photon's Boyer-Lindquist covector per unit of the frequency its
 /// observer sees: p_t = -energy, p_r, p_theta, p_phi.
 #[derive(Clone, Copy, Debug)]
-struct Photon {
-    energy: f64,
-    p_r: f64,
-    p_th: f64,
-    p_phi: f64,
+pub struct Photon {
+    pub energy: f64,
+    pub p_r: f64,
+    pub p_th: f64,
+    pub p_phi: f64,
 }
 
 /// The photon seen along the unit direction `d` by the ZAMO of frame `f`:
@@ -171,7 +171,7 @@ fn zamo_photon(f: &LocalFrame, d: DVec3) -> Photon {
 /// and e_r orthogonal to u, e_theta and e_phi with dr(e_r) > 0 (the
 /// falling frame of docs/inside-the-horizon.md); k = u - d. The pixel's components come through the flat
 /// oblate triad, as for every observer.
-fn falling_photon(f: &LocalFrame, d: DVec3, a: f64) -> Photon {
+pub fn falling_photon(f: &LocalFrame, d: DVec3, a: f64) -> Photon {
     let (r, s2) = (f.r, f.sin_theta * f.sin_theta);
     let (sigma, delta) = (f.sigma, f.delta);
     let big_a = (r * r + a * a).powi(2) - a * a * delta * s2;
