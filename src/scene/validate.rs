@@ -572,7 +572,10 @@ fn refuse(c: &Camera, at: &[Seg], refusal: Refusal) -> Check {
         Refusal::InsideSpinningHorizon { horizon } => fail(
             &key("observer"),
             name,
-            format!("stands inside the spinning hole's horizon (r+ = {horizon:.4} rs)"),
+            format!(
+                "stands inside the spinning hole's horizon (r+ = {horizon:.4} rs); a \"falling\" \
+                 camera may cross a non-rotating hole's horizon, a spinning one's is not drawn yet"
+            ),
         ),
         Refusal::StaticInErgoregion { r, r_ergo } => fail(
             &key("observer"),
