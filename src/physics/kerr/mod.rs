@@ -104,27 +104,20 @@ pub fn trace_zamo(position: DVec3, d: DVec3, spin: f64, disk: Option<KerrDisk>) 
     let ordinary = (eta > 0.0).then(|| {
         angular::Ordinary::new(a, lambda, eta, f.cos_theta, cc.theta_potential, cc.s_theta)
     });
-    if let (Some(ang), Some(disk)) = (ordinary, disk) {
-        let (r_in, r_out) = (2.0 * disk.inner, 2.0 * disk.outer);
-        for n in 0..MAX_CROSSINGS {
-            let tc = ang.crossing_tau(n);
-            if tc >= rad.tau_end {
-                break;
-            }
-            let rc = rad.r_at(tc);
-            if rc > 2e4 {
-                break;
-            }
-            if (r_in..=r_out).contains(&rc) {
-                let phi_bl = f.phi - turn * (rad.i_phi(tc) + ang.lambda_g_phi(lambda, tc));
-                return ray(KerrOutcome::Disk {
-                    r: rc / 2.0,
-                    phi: (-phi_bl.sin()).atan2(phi_bl.cos()),
-                    g: disk_g(rc, a, lambda, f.alpha, f.omega),
-                    crossings_before: n,
-                });
-            }
-        }
+    if let Some((n, tc, rc)) = ordinary
+        .as_ref()
+        .and_then(|ang| first_disk_crossing(&rad, ang, disk))
+    {
+        let ang = ordinary
+            .as_ref()
+            .expect("crossings need the ordinary motion");
+        let phi_bl = f.phi - turn * (rad.i_phi(tc) + ang.lambda_g_phi(lambda, tc));
+        return ray(KerrOutcome::Disk {
+            r: rc / 2.0,
+            phi: (-phi_bl.sin()).atan2(phi_bl.cos()),
+            g: disk_g(rc, a, lambda, f.alpha, f.omega),
+            crossings_before: n,
+        });
     }
     if rad.captured || turn < 0.0 {
         return ray(KerrOutcome::Captured);
@@ -155,6 +148,60 @@ pub fn trace_zamo(position: DVec3, d: DVec3, spin: f64, disk: Option<KerrDisk>) 
         cos_th,
         -sin_th * phi.sin(),
     )))
+}
+
+/// The first equatorial crossing of the backward ray inside the thin disk's
+/// annulus, before the path ends: which crossing (n), its Mino time and its
+/// Boyer-Lindquist radius (M).
+pub fn first_disk_crossing(
+    rad: &Radial,
+    ang: &angular::Ordinary,
+    disk: Option<KerrDisk>,
+) -> Option<(u32, f64, f64)> {
+    let disk = disk?;
+    let (r_in, r_out) = (2.0 * disk.inner, 2.0 * disk.outer);
+    for n in 0..MAX_CROSSINGS {
+        let tc = ang.crossing_tau(n);
+        if tc >= rad.tau_end {
+            break;
+        }
+        let rc = rad.r_at(tc);
+        if rc > 2e4 {
+            break;
+        }
+        if (r_in..=r_out).contains(&rc) {
+            return Some((n, tc, rc));
+        }
+    }
+    None
+}
+
+/// Checks that two outcomes agree to 1e-6 (the sky's direction; a disk's
+/// radius, azimuth and g) and says which they are: 0 escaped, 1 disk, 2
+/// captured (tests of the references against each other).
+#[cfg(test)]
+pub(crate) fn same_outcome(a: KerrOutcome, b: KerrOutcome, what: &str) -> usize {
+    match (a, b) {
+        (KerrOutcome::Escaped(x), KerrOutcome::Escaped(y)) => {
+            assert!((x - y).length() < 1e-6, "{what}: {x} vs {y}");
+            0
+        }
+        (
+            KerrOutcome::Disk { r, phi, g, .. },
+            KerrOutcome::Disk {
+                r: r2,
+                phi: p2,
+                g: g2,
+                ..
+            },
+        ) => {
+            let err = (r - r2).abs().max((phi - p2).abs()).max((g - g2).abs());
+            assert!(err < 1e-6, "{what}: {r} {phi} {g} vs {r2} {p2} {g2}");
+            1
+        }
+        (KerrOutcome::Captured, KerrOutcome::Captured) => 2,
+        (x, y) => panic!("{what}: {x:?} vs {y:?}"),
+    }
 }
 
 /// The redshift g of light from the prograde Keplerian emitter at BL radius

@@ -319,34 +319,8 @@ pub fn trace_schild_as(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::physics::kerr::trace_zamo;
+    use crate::physics::kerr::{same_outcome, trace_zamo};
     use crate::physics::sphere_direction;
-
-    /// Which of escaped, disk, captured two outcomes are (the same), after
-    /// checking they agree to 1e-6 (direction; radius, azimuth and g).
-    fn same(a: KerrOutcome, b: KerrOutcome, what: &str) -> usize {
-        match (a, b) {
-            (KerrOutcome::Escaped(x), KerrOutcome::Escaped(y)) => {
-                assert!((x - y).length() < 1e-6, "{what}: {x} vs {y}");
-                0
-            }
-            (
-                KerrOutcome::Disk { r, phi, g, .. },
-                KerrOutcome::Disk {
-                    r: r2,
-                    phi: p2,
-                    g: g2,
-                    ..
-                },
-            ) => {
-                let err = (r - r2).abs().max((phi - p2).abs()).max((g - g2).abs());
-                assert!(err < 1e-6, "{what}: {r} {phi} {g} vs {r2} {p2} {g2}");
-                1
-            }
-            (KerrOutcome::Captured, KerrOutcome::Captured) => 2,
-            (x, y) => panic!("{what}: {x:?} vs {y:?}"),
-        }
-    }
 
     /// For photons of E > 0 the integrated paths and the closed form agree
     /// (sky direction, disk radius, azimuth and g to 1e-6), over cameras
@@ -378,7 +352,7 @@ mod tests {
                     continue;
                 }
                 let what = format!("{spin} {at} {d}: integrated vs closed form");
-                compared[same(trace_schild(at, d, spin, disk), want.outcome, &what)] += 1;
+                compared[same_outcome(trace_schild(at, d, spin, disk), want.outcome, &what)] += 1;
             }
         }
         assert!(compared.iter().all(|&n| n > 10), "{compared:?}");
@@ -417,7 +391,7 @@ mod tests {
                     continue;
                 }
                 let what = format!("{spin} {at} {d}: integrated vs closed form");
-                match same(trace_schild(at, d, spin, disk), want, &what) {
+                match same_outcome(trace_schild(at, d, spin, disk), want, &what) {
                     0 => panic!("{what}: E < 0 from the sky"),
                     k => seen[k - 1] += 1,
                 }
