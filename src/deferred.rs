@@ -96,6 +96,7 @@ pub fn pays(scene: &Scene, spacetime: &Spacetime, width: u32, height: u32) -> bo
         f64::from(n) / f64::from(cols * rows)
     };
     match spacetime {
+        Spacetime::Kerr(_) if spacetime.camera_inside_spinning(scene) => false,
         Spacetime::Kerr(hole) => share(&|x0, d| hole.defers(thin, x0, d)) < MAX_DEFERRED_SHARE,
         Spacetime::Schwarzschild(_) if thin.is_some() => {
             let on_disk = |x0, d| {

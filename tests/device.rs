@@ -65,7 +65,7 @@ fn lacks(need: Need, features: &blackhole::features::Features) -> Option<String>
 fn main() -> ExitCode {
     let args = Arguments::from_args();
     let features = common::renderer().features();
-    let tests: [(&str, Need, fn()); 5] = [
+    let tests: [(&str, Need, fn()); 6] = [
         (
             "presets_match_their_golden_images",
             Need::BlessedDevice,
@@ -75,6 +75,11 @@ fn main() -> ExitCode {
             "gpu_kerr_aov_matches_the_f64_closed_form",
             Need::Float64,
             kerr_gpu::gpu_kerr_aov_matches_the_f64_closed_form,
+        ),
+        (
+            "gpu_kerr_inside_matches_the_f64_closed_form",
+            Need::Float64,
+            kerr_gpu::gpu_kerr_inside_matches_the_f64_closed_form,
         ),
         (
             "the_spinning_holes_split_draws_what_the_single_dispatch_draws",

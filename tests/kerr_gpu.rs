@@ -33,10 +33,16 @@ fn p99(v: &mut [f64]) -> f64 {
 
 /// The f64 record of a ray as the AOV's four numbers.
 fn aov_of(ray: &KerrRay) -> [f64; 4] {
-    match ray.outcome {
-        KerrOutcome::Captured => [0.0, 0.0, 0.0, 1.0],
-        KerrOutcome::Disk { r, phi, g, .. } => [r, phi, g, 2.0],
-        KerrOutcome::Escaped(d) => [d.x, d.y, d.z, 0.0],
+    aov_of_outcome(Some(ray.outcome))
+}
+
+/// The same for an outcome, None being the other universe (outcome 5).
+fn aov_of_outcome(outcome: Option<KerrOutcome>) -> [f64; 4] {
+    match outcome {
+        None => [0.0, 0.0, 0.0, 5.0],
+        Some(KerrOutcome::Captured) => [0.0, 0.0, 0.0, 1.0],
+        Some(KerrOutcome::Disk { r, phi, g, .. }) => [r, phi, g, 2.0],
+        Some(KerrOutcome::Escaped(d)) => [d.x, d.y, d.z, 0.0],
     }
 }
 
@@ -59,7 +65,7 @@ fn distance(a: [f64; 4], b: [f64; 4]) -> f64 {
 struct Figures {
     rays: usize,
     ill_conditioned: usize,
-    outcomes: [usize; 3],
+    outcomes: [usize; 4],
     dir: Vec<f64>,
     radius: Vec<f64>,
     g: Vec<f64>,
@@ -100,12 +106,22 @@ fn compare(spin: f64, position: [f64; 3], observer: &str, aim: &str, f64_roots: 
     if at.x == 0.0 && at.z == 0.0 {
         at.x = 1e-6 * at.length();
     }
-    let trace =
-        |d: DVec3| kerr::trace(at, d, spin, kind, disk).expect("a camera that may stand there");
+    // Between the horizons: the closed form continued through r+.
+    let inside = kind == KerrObserver::Falling
+        && kerr::LocalFrame::at(2.0 * at, spin).r <= kerr::r_horizon(spin);
+    let trace = |d: DVec3| {
+        if inside {
+            let outcome = kerr::interior::trace_falling_inside(at, d, spin, disk);
+            let (lambda, eta) = (f64::NAN, f64::NAN);
+            return (aov_of_outcome(outcome), 0, lambda, eta);
+        }
+        let ray = kerr::trace(at, d, spin, kind, disk).expect("a camera that may stand there");
+        (aov_of(&ray), ray.case, ray.lambda, ray.eta)
+    };
     let mut f = Figures {
         rays: 0,
         ill_conditioned: 0,
-        outcomes: [0; 3],
+        outcomes: [0; 4],
         dir: Vec::new(),
         radius: Vec::new(),
         g: Vec::new(),
@@ -113,8 +129,7 @@ fn compare(spin: f64, position: [f64; 3], observer: &str, aim: &str, f64_roots: 
     for y in 0..H {
         for x in 0..W {
             let d = frame.ray_dir(x, y, W, H).expect("a pinhole ray");
-            let ray = trace(d);
-            let cpu = aov_of(&ray);
+            let (cpu, case, lambda, eta) = trace(d);
             let p = gpu.get_pixel(x, y).0.map(f64::from);
             f.rays += 1;
             assert!(
@@ -125,7 +140,7 @@ fn compare(spin: f64, position: [f64; 3], observer: &str, aim: &str, f64_roots: 
             let (u, v) = (frame.right, frame.up);
             let nudge = [u, -u, v, -v]
                 .iter()
-                .map(|n| distance(cpu, aov_of(&trace((d + 1e-7 * *n).normalize()))))
+                .map(|n| distance(cpu, trace((d + 1e-7 * *n).normalize()).0))
                 .fold(0.0, f64::max);
             if nudge > 0.25 {
                 f.ill_conditioned += 1;
@@ -133,10 +148,7 @@ fn compare(spin: f64, position: [f64; 3], observer: &str, aim: &str, f64_roots: 
                 let err = distance(cpu, p);
                 assert!(
                     err <= 4.0 * nudge + 1.0 || p[3] != cpu[3] && nudge.is_infinite(),
-                    "spin {spin} {position:?} {observer} pixel ({x}, {y}): GPU {p:?} vs f64 {cpu:?} (nudge {nudge}; case {}, lambda {}, eta {})",
-                    ray.case,
-                    ray.lambda,
-                    ray.eta
+                    "spin {spin} {position:?} {observer} pixel ({x}, {y}): GPU {p:?} vs f64 {cpu:?} (nudge {nudge}; case {case}, lambda {lambda}, eta {eta})"
                 );
                 continue;
             }
@@ -147,7 +159,8 @@ fn compare(spin: f64, position: [f64; 3], observer: &str, aim: &str, f64_roots: 
             f.outcomes[match cpu[3] as u32 {
                 0 => 0,
                 1 => 1,
-                _ => 2,
+                2 => 2,
+                _ => 3,
             }] += 1;
             match cpu[3] as u32 {
                 0 => f.dir.push(distance(cpu, p) * DIR_TOL),
@@ -205,7 +218,7 @@ pub fn gpu_kerr_aov_matches_the_f64_closed_form() {
         let mut f = compare(spin, position, observer, aim, true);
         let (dir, radius, g) = (p99(&mut f.dir), p99(&mut f.radius), p99(&mut f.g));
         println!(
-            "spin {spin:6} {position:?} {observer:9} rays {} (ill-conditioned {}), escaped/captured/disk {:?}: escape dir p99 {dir:.2e} rad, disk radius p99 {radius:.2e} rs, g p99 {g:.2e}",
+            "spin {spin:6} {position:?} {observer:9} rays {} (ill-conditioned {}), escaped/captured/disk/other universe {:?}: escape dir p99 {dir:.2e} rad, disk radius p99 {radius:.2e} rs, g p99 {g:.2e}",
             f.rays, f.ill_conditioned, f.outcomes
         );
         assert!(
@@ -225,6 +238,65 @@ pub fn gpu_kerr_aov_matches_the_f64_closed_form() {
     }
 }
 
+/// Run by tests/device.rs (64-bit floats): falling cameras between a
+/// spinning hole's horizons, against the f64 closed form continued through
+/// r+ (src/physics/kerr/interior.rs, itself held to the Kerr-Schild
+/// integration of schild.rs), to the same goals.
+pub fn gpu_kerr_inside_matches_the_f64_closed_form() {
+    // a* = 0.9: r+ = 1.436 M, r- = 0.564 M. Boyer-Lindquist r = 0.8 r+
+    // (0.574 rs) and 1.01 r- (0.285 rs), looking out and down.
+    let r_plus = kerr::r_horizon(0.9);
+    let r_minus = 0.81 / r_plus;
+    for (spin, r, dir, aim) in [
+        (
+            0.9,
+            0.8 * r_plus,
+            [0.3, 0.4, -0.866],
+            "look_at = [1.0, 3.0, -8.0]",
+        ),
+        (
+            0.9,
+            0.8 * r_plus,
+            [0.0, 0.6, -0.8],
+            "look_at = [0.0, -4.0, 1.0]",
+        ),
+        (
+            0.9,
+            1.01 * r_minus,
+            [0.2, 0.3, -0.933],
+            "look_at = [2.0, 2.0, -8.0]",
+        ),
+        (
+            0.9,
+            1.002 * r_minus,
+            [0.0, 0.15, -0.989],
+            "look_at = [0.0, -3.0, -0.5]",
+        ),
+    ] {
+        let position = inside_point(spin, r, dir);
+        let mut f = compare(spin, position, "falling", aim, true);
+        let (d99, radius, g) = (p99(&mut f.dir), p99(&mut f.radius), p99(&mut f.g));
+        println!(
+            "inside: spin {spin} BL r {r:.4} M at {position:?} rays {} (ill-conditioned {}), escaped/captured/disk/other universe {:?}: escape dir p99 {d99:.2e} rad, disk radius p99 {radius:.2e} rs, g p99 {g:.2e}",
+            f.rays, f.ill_conditioned, f.outcomes
+        );
+        assert!(
+            d99 <= DIR_TOL && radius <= RADIUS_TOL && g <= G_TOL,
+            "inside: spin {spin} r {r}"
+        );
+        assert!(f.outcomes[0] > 0, "{:?}", f.outcomes);
+    }
+}
+
+/// The world point (rs, the hole at the origin, spin axis y) at
+/// Boyer-Lindquist r (M) in the direction `dir` (unit) from the centre.
+fn inside_point(spin: f64, r: f64, dir: [f64; 3]) -> [f64; 3] {
+    let n = DVec3::from(dir).normalize();
+    let a = spin;
+    let rho = ((r * r + a * a) / (1.0 + a * a * n.y * n.y / (r * r))).sqrt();
+    (0.5 * rho * n).to_array()
+}
+
 /// The build for devices without 64-bit floats in shaders
 /// (`BLACKHOLE_NO_F64=1` forces it here): the same path with the quartic's
 /// roots in 32-bit floats, held to the same goals on cameras away from the
@@ -242,7 +314,7 @@ fn gpu_kerr_with_32_bit_roots_meets_the_goals_away_from_the_photon_region() {
         let (dir_max, radius_max, g_max) = (most(&f.dir), most(&f.radius), most(&f.g));
         let (dir, radius, g) = (p99(&mut f.dir), p99(&mut f.radius), p99(&mut f.g));
         println!(
-            "32-bit roots: spin {spin:6} {position:?} {observer:9} rays {} (ill-conditioned {}), escaped/captured/disk {:?}: escape dir p99 {dir:.2e} (max {dir_max:.2e}) rad, disk radius p99 {radius:.2e} (max {radius_max:.2e}) rs, g p99 {g:.2e} (max {g_max:.2e})",
+            "32-bit roots: spin {spin:6} {position:?} {observer:9} rays {} (ill-conditioned {}), escaped/captured/disk/other universe {:?}: escape dir p99 {dir:.2e} (max {dir_max:.2e}) rad, disk radius p99 {radius:.2e} (max {radius_max:.2e}) rs, g p99 {g:.2e} (max {g_max:.2e})",
             f.rays, f.ill_conditioned, f.outcomes
         );
         assert!(

@@ -132,6 +132,9 @@ fn raymarch_params_match_the_glsl_block() {
             offset_of!(ObserverParams, kind),
             offset_of!(ObserverParams, radial),
             offset_of!(ObserverParams, fall_speed),
+            offset_of!(ObserverParams, bl_r_hi),
+            offset_of!(ObserverParams, bl_r_lo),
+            offset_of!(ObserverParams, _pad),
         ],
     );
     raymarch_struct_matches(

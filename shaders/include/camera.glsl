@@ -133,11 +133,20 @@ vec3 rain_to_coordinate(StaticFrame frame, vec3 dir) {
 // static frame there (the metric's, metric_static_frame), then that frame's
 // radial squeeze; its clock and motion scale the redshift it measures
 // (observer_g, observer_lapse). A falling camera of one non-rotating hole
-// takes the rain form instead.
+// takes the rain form instead; one between a spinning hole's horizons keeps
+// its own direction (KERR_INSIDE).
 vec3 observer_to_coordinate(vec3 origin, vec3 dir) {
     if (int(P.observer.kind) != OBS_FLAT) {
         StaticFrame frame = metric_static_frame(origin);
         if (RAIN_FORM) return rain_to_coordinate(frame, dir);
+        if (KERR_INSIDE) {
+            // No frame at rest inside a spinning hole: the direction stays
+            // the falling camera's, for the metric's falling frame
+            // (kerr_falling_camera); its clock is taken as infinity's.
+            observer_lapse = 1.0;
+            observer_g = 1.0;
+            return dir;
+        }
         vec3 beta = P.observer.velocity;
         float b2 = dot(beta, beta);
         float doppler = 1.0;

@@ -58,6 +58,8 @@ struct CameraParams {
 struct ObserverParams {
     vec3 velocity;  float kind;          // velocity in the static frame (world axes); OBS_*
     vec3 radial;    float fall_speed;    // RAIN_FORM: hole-to-camera unit vector and sqrt(rs / r)
+    float bl_r_hi;  float bl_r_lo;       // KERR_INSIDE: the camera's Boyer-Lindquist r (M), hi + lo in f64
+    vec2 _pad;
 };
 
 struct MetricParams {

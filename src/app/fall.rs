@@ -55,7 +55,7 @@ impl WindowFall {
         let target = scene.fall_target_as(ObserverKind::Falling);
         let t = now.duration_since(self.began).as_secs_f64();
         let anim = &scene.animation;
-        let r = anim.fall_radius(self.r0, target.rs, anim.fall_end(&target), t);
+        let r = anim.fall_radius(self.r0, target.rs, anim.fall_end(&target, self.line), t);
         let camera = target.centre + r * self.line;
         let mut o = *orbit;
         o.distance = LOOK * target.rs;
@@ -76,17 +76,16 @@ pub fn camera_status(scene: &Scene) -> String {
     if scene.black_holes.is_empty() {
         return "no hole".into();
     }
-    let r = (DVec3::from(scene.camera.position) - target.centre).length() / target.rs;
-    let a = 0.5 * target.spin;
+    let rel = DVec3::from(scene.camera.position) - target.centre;
+    let r = rel.length() / target.rs;
+    // Inside: Boyer-Lindquist r <= r+ on the camera's line.
     let horizon = radii::horizon(1.0, target.spin.abs());
-    // The horizon's distance from the centre (sqrt(r+^2 + a^2) for a
-    // spinning hole's Boyer-Lindquist r+).
-    let inside = r < (horizon * horizon + a * a).sqrt();
+    let inside = target.radius_at(rel.length(), rel.normalize_or(DVec3::Y)) <= horizon;
     let mut s = format!(
         "r = {r:.4} rs, {} the horizon",
         if inside { "inside" } else { "outside" }
     );
-    if target.interior && scene.camera.observer == ObserverKind::Falling {
+    if target.interior && target.spin == 0.0 && scene.camera.observer == ObserverKind::Falling {
         s += &format!(
             "  |  {:.4} rs/c of proper time to the singularity",
             2.0 / 3.0 * r.powf(1.5)

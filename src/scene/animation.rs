@@ -83,9 +83,10 @@ pub struct Animation {
     /// radius (film time in proportion to the faller's proper time).
     pub fall_seconds: f64,
     /// `camera = "fall"`: where the fall ends, its distance from the first
-    /// hole's centre in rs (None: [`FALL_END_DEFAULT`] for a non-rotating
-    /// hole, inside its horizon; [`FALL_END_SPINNING`] times the horizon's
-    /// distance for a spinning one, whose interior is not drawn yet).
+    /// hole's centre in rs (None: for a falling camera [`FALL_END_DEFAULT`]
+    /// for a non-rotating hole, [`FALL_END_INNER`] times the deepest
+    /// Boyer-Lindquist r for a spinning one, just outside its inner horizon;
+    /// otherwise [`FALL_END_SPINNING`] times the horizon's distance).
     pub fall_end_radius: Option<f64>,
     /// Show the disk as it was when its light left it (one hole): each
     /// point's time is the frame's time less the light's travel time along
@@ -119,27 +120,66 @@ impl Default for Animation {
 /// a falling camera may come to the singularity.
 pub const FALL_END_DEFAULT: f64 = crate::spacetime::FALLING_MIN_R;
 
-/// Where a fall toward a spinning hole ends by default: this factor times
-/// its outer horizon's distance from the centre (sqrt(r+^2 + a^2)), just
-/// outside it (the interior of a spinning hole is not drawn yet).
+/// Where a fall stops outside a hole by default (an observer other than
+/// `"falling"`, several holes, gravity off): this factor times the horizon's
+/// distance from the centre (sqrt(r+^2 + a^2) for a spinning hole).
 pub const FALL_END_SPINNING: f64 = 1.05;
 
-/// The hole a fall heads for: its centre, its rs and its spin, and whether
-/// the camera may fall through its horizon (a falling observer around one
-/// non-rotating hole with gravity on; any other observer, several holes or
-/// gravity off: the fall stops at [`FALL_END_SPINNING`] rs, as it always
-/// did).
+/// Where a falling camera's fall into a spinning hole ends by default: this
+/// factor times the deepest Boyer-Lindquist r it may reach
+/// (`physics::kerr::falling_floor`: just outside the inner horizon r-, or
+/// 0.05 rs for a slowly turning hole), on the line of the fall.
+pub const FALL_END_INNER: f64 = 1.01;
+
+/// The hole a fall heads for: its centre, its rs, its spin and axis, and
+/// whether the camera may fall through its horizon (a falling observer
+/// around one hole with gravity on; any other observer, several holes or
+/// gravity off: the fall stops at [`FALL_END_SPINNING`] times the horizon's
+/// distance, as it always did).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FallTarget {
     pub centre: DVec3,
     pub rs: f64,
     pub spin: f64,
+    /// The spin axis (the disk's normal), unit.
+    pub axis: DVec3,
     pub interior: bool,
 }
 
+impl FallTarget {
+    /// The distance from the centre (scene units) at which the fall's `line`
+    /// (unit, from the centre) reaches Boyer-Lindquist r (rs): r^2 + a^2
+    /// sin^2 theta, cos theta = y / r.
+    pub fn distance_at(&self, r: f64, line: DVec3) -> f64 {
+        let (a, ny) = (0.5 * self.spin, line.dot(self.axis));
+        ((r * r + a * a) / (1.0 + a * a * ny * ny / (r * r))).sqrt() * self.rs
+    }
+
+    /// The Boyer-Lindquist r (rs) at `distance` (scene units) from the centre
+    /// along `line`.
+    pub fn radius_at(&self, distance: f64, line: DVec3) -> f64 {
+        let (a, ny, rho) = (0.5 * self.spin, line.dot(self.axis), distance / self.rs);
+        let w = rho * rho - a * a;
+        (0.5 * (w + (w * w + 4.0 * a * a * rho * rho * ny * ny).sqrt())).sqrt()
+    }
+
+    /// The deepest Boyer-Lindquist r (rs) a falling camera may reach.
+    pub fn floor(&self) -> f64 {
+        if self.spin == 0.0 {
+            FALL_END_DEFAULT
+        } else {
+            0.5 * crate::physics::kerr::falling_floor(self.spin.abs())
+        }
+    }
+}
+
 impl Animation {
-    /// Where a fall into `target` ends, in the scene's units.
-    pub fn fall_end(&self, target: &FallTarget) -> f64 {
+    /// Where a fall into `target` along `line` (unit, from its centre) ends,
+    /// in the scene's units.
+    pub fn fall_end(&self, target: &FallTarget, line: DVec3) -> f64 {
+        if target.interior && target.spin != 0.0 && self.fall_end_radius.is_none() {
+            return target.distance_at(FALL_END_INNER * target.floor(), line);
+        }
         let default = if target.interior {
             FALL_END_DEFAULT
         } else if target.spin == 0.0 {
@@ -180,7 +220,8 @@ impl Animation {
             CameraPath::Fall => {
                 let (centre, rs) = (hole.centre, hole.rs);
                 let rel = DVec3::from(base.position) - centre;
-                let r = self.fall_radius(rel.length(), rs, self.fall_end(hole), t);
+                let end = self.fall_end(hole, rel.normalize_or_zero());
+                let r = self.fall_radius(rel.length(), rs, end, t);
                 Camera {
                     position: (centre + rel.normalize_or_zero() * r).to_array(),
                     ..*base
@@ -246,6 +287,7 @@ mod tests {
         centre: DVec3::ZERO,
         rs: 1.0,
         spin: 0.0,
+        axis: DVec3::Y,
         interior: true,
     };
 

@@ -35,23 +35,24 @@ impl Scene {
     }
 
     /// The same for a camera held by `observer`: only a falling one goes
-    /// through the horizon (of one non-rotating hole with gravity on).
+    /// through the horizon (of one hole with gravity on).
     pub fn fall_target_as(&self, observer: ObserverKind) -> FallTarget {
         self.black_holes.first().map_or(
             FallTarget {
                 centre: DVec3::ZERO,
                 rs: 1.0,
                 spin: 0.0,
+                axis: DVec3::Y,
                 interior: false,
             },
             |h| FallTarget {
                 centre: DVec3::from(h.position),
                 rs: h.rs,
                 spin: h.spin,
+                axis: DVec3::from(self.disk.normal).normalize_or(DVec3::Y),
                 interior: observer == ObserverKind::Falling
                     && self.physics.gravity
-                    && self.black_holes.len() == 1
-                    && h.spin == 0.0,
+                    && self.black_holes.len() == 1,
             },
         )
     }

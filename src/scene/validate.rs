@@ -382,16 +382,29 @@ impl Scene {
             let target = self.fall_target();
             let horizon = crate::spacetime::radii::horizon(1.0, target.spin.abs());
             rule(
-                target.spin == 0.0 || end > 1.01 * horizon,
+                target.spin == 0.0 || target.interior || end > 1.01 * horizon,
                 &key("fall_end_radius"),
                 end,
                 format!(
-                    "is inside the spinning hole's horizon (r+ = {horizon:.4} rs): a fall toward \
-                     a spinning hole ends outside it (its interior is not drawn yet)"
+                    "is inside the spinning hole's horizon (r+ = {horizon:.4} rs): only a \
+                     \"falling\" camera (one hole, gravity on) falls through it"
+                ),
+            )?;
+            let line = (DVec3::from(self.camera.position) - target.centre).normalize_or(DVec3::Y);
+            let (r, floor) = (target.radius_at(end * target.rs, line), target.floor());
+            rule(
+                !target.interior || target.spin == 0.0 || r > floor,
+                &key("fall_end_radius"),
+                end,
+                format!(
+                    "puts the camera at Boyer-Lindquist r = {r:.6} rs on the line of its fall; a \
+                     falling camera of a spinning hole must stay above r = {floor:.6} rs, just \
+                     outside the inner horizon r- = {:.6} rs (docs/inside-the-horizon.md)",
+                    crate::spacetime::radii::inner_horizon(1.0, target.spin)
                 ),
             )?;
             rule(
-                !target.interior || end >= FALLING_MIN_R,
+                !target.interior || target.spin != 0.0 || end >= FALLING_MIN_R,
                 &key("fall_end_radius"),
                 end,
                 format!(
@@ -573,8 +586,19 @@ fn refuse(c: &Camera, at: &[Seg], refusal: Refusal) -> Check {
             &key("observer"),
             name,
             format!(
-                "stands inside the spinning hole's horizon (r+ = {horizon:.4} rs); a \"falling\" \
-                 camera may cross a non-rotating hole's horizon, a spinning one's is not drawn yet"
+                "stands inside the spinning hole's horizon (r+ = {horizon:.4} rs), where only a \
+                 \"falling\" observer can be (nothing else stands still or orbits there): set \
+                 observer = \"falling\""
+            ),
+        ),
+        Refusal::FallingTooDeep { r, floor, inner } => fail(
+            &key("position"),
+            position(),
+            format!(
+                "is at Boyer-Lindquist r = {r:.6} rs; a \"falling\" camera of a spinning hole must \
+                 stay above r = {floor:.6} rs, (1 + 1e-3) times the inner horizon r- = {inner:.6} \
+                 rs (beyond r- the paths are not drawn) and at least {FALLING_MIN_R} rs from the \
+                 centre (docs/inside-the-horizon.md)"
             ),
         ),
         Refusal::StaticInErgoregion { r, r_ergo } => fail(

@@ -95,6 +95,11 @@ impl SpinningHole {
             Err(PlacementError::InsideHorizon) => Err(Refusal::InsideSpinningHorizon {
                 horizon: self.horizon(),
             }),
+            Err(PlacementError::TooDeep(r, floor)) => Err(Refusal::FallingTooDeep {
+                r: r * half,
+                floor: floor * half,
+                inner: radii::inner_horizon(self.hole.rs, self.spin),
+            }),
             Err(PlacementError::StaticInErgoregion(r, r_ergo)) => {
                 Err(Refusal::StaticInErgoregion {
                     r: r * half,
@@ -105,6 +110,17 @@ impl SpinningHole {
                 Err(Refusal::OrbitTooFast { v, r: r * half })
             }
         }
+    }
+
+    /// The Boyer-Lindquist r (M) of `position` (world).
+    pub fn radius_of(&self, position: DVec3) -> f64 {
+        let local = 2.0 * self.local(position - self.hole.position);
+        kerr::LocalFrame::at(local, self.spin).r
+    }
+
+    /// The outer horizon r+ in M.
+    pub fn r_plus_m(&self) -> f64 {
+        kerr::r_horizon(self.spin)
     }
 
     /// The outer horizon, the prograde equatorial photon orbit and the

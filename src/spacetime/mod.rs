@@ -135,6 +135,22 @@ impl Spacetime {
         Observer::new(kind, position, self.holes(), disk_normal, gravity)
     }
 
+    /// Whether the scene's camera is a falling camera between a spinning
+    /// hole's horizons (the ray march's `KERR_INSIDE` path).
+    pub fn camera_inside_spinning(&self, scene: &Scene) -> bool {
+        self.camera_inside_radius(scene).is_some()
+    }
+
+    /// The Boyer-Lindquist r (M) of a falling camera between a spinning
+    /// hole's horizons; None for every other camera.
+    pub fn camera_inside_radius(&self, scene: &Scene) -> Option<f64> {
+        let Spacetime::Kerr(k) = self else {
+            return None;
+        };
+        let r = k.radius_of(DVec3::from(scene.camera.position));
+        (scene.camera.observer == ObserverKind::Falling && r <= k.r_plus_m()).then_some(r)
+    }
+
     /// The observer holding the scene's camera (`[camera] observer` at its
     /// position, an orbit's sense from the disk's normal).
     pub fn camera_observer(&self, scene: &Scene) -> Observer {

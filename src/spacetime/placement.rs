@@ -34,8 +34,13 @@ pub enum Refusal {
     /// `"flat"` around a spinning hole (it is the Schwarzschild comparison
     /// mapping).
     FlatAroundSpin,
-    /// Inside a spinning hole's outer horizon `horizon`.
+    /// Inside a spinning hole's outer horizon `horizon`, with an observer
+    /// other than `"falling"`.
     InsideSpinningHorizon { horizon: f64 },
+    /// `"falling"` between a spinning hole's horizons at Boyer-Lindquist
+    /// `r`, at or below `floor`: (1 + 1e-3) times the inner horizon `inner`
+    /// or [`FALLING_MIN_R`] rs, whichever is farther out (rs units).
+    FallingTooDeep { r: f64, floor: f64, inner: f64 },
     /// `"static"` inside a spinning hole's ergoregion (`r`, `r_ergo`).
     StaticInErgoregion { r: f64, r_ergo: f64 },
     /// `"orbiting"` around a spinning hole, faster than light (`v` in c) at

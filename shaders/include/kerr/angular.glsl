@@ -174,6 +174,19 @@ void kerr_phi_start(inout KerrRadial k, inout KerrAngular g) {
 // -(I_phi + lambda G_phi) (lambda times the integral of 1 / sin^2 theta);
 // e1: the radial point at tau (kerr_phi_start first). An equatorial ray
 // (eta = 0 in the plane) keeps theta = pi/2 and lambda G_phi = lambda tau.
+// lambda G_phi from the camera's polar point (u0) to u1 (its point ep, Pi
+// there: pi, the vortical Pi(n) or the ordinary Pi(-N)).
+float kerr_polar_lg(KerrAngular g, float lam, float u0, float u1, KerrPoint ep, float pi) {
+    float two_k = 2.0 * g.kk;
+    if (!KERR_COMMON_ONLY && g.vortical) {
+        float p1 = kerr_polar_pi(g, ep, pi);
+        return abs(lam) < 1e-12 ? PI * (floor((u1 - g.kk) / two_k) - floor((u0 - g.kk) / two_k))
+                                : g.coef * ((u1 - u0) + g.u_minus / (1.0 - g.u_minus) * (p1 - g.phi_p0));
+    }
+    float p1 = kerr_polar_pi(g, ep, pi);
+    return abs(lam) < 1e-12 ? PI * (floor(u1 / two_k) - floor(u0 / two_k)) : g.coef * (p1 - g.phi_p0);
+}
+
 vec2 kerr_end(KerrRadial k, KerrAngular g, float a, float lam, float eta, float tau, KerrPoint e1) {
     float u0 = g.vortical ? g.v0 : g.psi0;
     float u1 = u0 + g.w * tau;
@@ -183,18 +196,9 @@ vec2 kerr_end(KerrRadial k, KerrAngular g, float a, float lam, float eta, float 
     vec3 rj = kerr_rj(x.xyz, y.xyz, p.xyz);
     float i_phi = kerr_i_phi(k, a, tau, e1, rj.xy);
     if (eta == 0.0) return vec2(0.0, -i_phi - lam * tau);
-    float two_k = 2.0 * g.kk, lg;
-    if (!KERR_COMMON_ONLY && g.vortical) {
-        float n = g.m / (1.0 - g.u_minus);
-        float p1 = kerr_polar_pi(g, ep, kerr_pi(n, ep, g.m, g.mc));
-        lg = abs(lam) < 1e-12 ? PI * (floor((u1 - g.kk) / two_k) - floor((u0 - g.kk) / two_k))
-                              : g.coef * ((u1 - u0) + g.u_minus / (1.0 - g.u_minus) * (p1 - g.phi_p0));
-    } else {
-        float bn = g.u_plus / g.one_m_up;
-        float p1 = kerr_polar_pi(g, ep, kerr_pi_neg_of(bn, ep, g.m, g.mc, rj.z));
-        lg = abs(lam) < 1e-12 ? PI * (floor(u1 / two_k) - floor(u0 / two_k)) : g.coef * (p1 - g.phi_p0);
-    }
-    return vec2(kerr_cos_of(g, ep), -i_phi - lg);
+    float pi = !KERR_COMMON_ONLY && g.vortical ? kerr_pi(g.m / (1.0 - g.u_minus), ep, g.m, g.mc)
+                                               : kerr_pi_neg_of(g.u_plus / g.one_m_up, ep, g.m, g.mc, rj.z);
+    return vec2(kerr_cos_of(g, ep), -i_phi - kerr_polar_lg(g, lam, u0, u1, ep, pi));
 }
 
 #endif

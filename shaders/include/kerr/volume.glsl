@@ -9,9 +9,11 @@
 #include "hit.glsl"
 #include "volume.glsl"
 #include "kerr/angular.glsl"
+#include "kerr/interior.glsl"
 
-// (1 - omega lambda) / alpha at the camera: what turns a shift seen from
-// infinity into the one the camera's ZAMO sees (set by metric_trace).
+// 1 / E = (1 - omega lambda) / alpha at the camera: what turns a shift seen
+// from infinity into the one the camera's ZAMO (or, between the horizons,
+// the falling camera) sees (set by metric_trace).
 float kerr_zamo_g = 1.0;
 
 // The gas's shift (volume.glsl): a prograde Keplerian emitter at the
@@ -114,16 +116,27 @@ float kerr_r_scd(KerrRadial k, vec3 e) {
     return ((k.bb * k.r2 - k.ba * k.r1) + (k.bb * k.r2 + k.ba * k.r1) * e.y) / ((k.bb - k.ba) + (k.bb + k.ba) * e.y);
 }
 
+// The radial part of the azimuth's rate at Mino time tau (radius r): from
+// inside the horizons (KERR_INSIDE) that of the ingoing azimuth, per turn.
+float kerr_volume_rate(KerrRadial rad, float a, float lam, float eta, float turn, float r, float tau) {
+    if (KERR_INSIDE) {
+        float sigma = kerr_radial_sign(rad, tau);
+        return turn * kerr_ingoing_rates(rad, r, r - rad.rh.y, sigma, turn, a, lam, eta, 0.0, false).x;
+    }
+    return kerr_phi_rate_r(a, lam, r, rad.rh.x);
+}
+
 // turn: the sign of the photon's energy (kerr_camera): with E < 0 the
-// azimuth runs the other way along the backward path.
+// azimuth runs the other way along the backward path. shift_o: from inside
+// the horizons, the camera's phi~ - phi (kerr_ingoing_shift; each point's
+// own taken off).
 void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta, float cp, float sp,
-                 float to_m, bool in_slab, float turn, inout Hit hit) {
+                 float to_m, bool in_slab, float turn, float shift_o, inout Hit hit) {
     float H = to_m * P.volume.half_height;
     float r_far = 1.5 * to_m * P.disk.outer;
     float u_lim = 1.0 / (1.05 * to_m * P.disk.outer);
     float half_gap = ang.kk / ang.w;
     float rate_y = sqrt(eta);
-    float r_h = rad.rh.x;
     int n0 = in_slab ? -1 : 0;
     // The polar part's constants (ordinary motion: eta > 0).
     // Where the radial part of the azimuth (from the camera's) is known.
@@ -161,8 +174,8 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
         float gap = 0.0;
         int k = -1;
         [[dont_unroll]] do {
-            float r = kerr_r_of(rad, kerr_radial_point(rad, gm + float(k) * 0.57735027 * gh));
-            gap += kerr_phi_rate_r(a, lam, r, r_h);
+            float tg = gm + float(k) * 0.57735027 * gh;
+            gap += kerr_volume_rate(rad, a, lam, eta, turn, kerr_r_of(rad, kerr_radial_point(rad, tg)), tg);
         } while ((k += 2) <= 1);
         float phr0 = phr_known + gh * gap;
         // The polar part at the window's start in closed form (near the
@@ -182,7 +195,7 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
         [[dont_unroll]] do {
             rk[k] = kerr_r_scd(rad, er);
             ck[k] = sq_up * et.y;
-            q[k] = kerr_phi_rate_r(a, lam, rk[k], r_h);
+            q[k] = kerr_volume_rate(rad, a, lam, eta, turn, rk[k], ta + float(k) * h);
             rate[k] = q[k] + kerr_phi_rate_th(lam, ck[k]);
             er = kerr_scd_add(er, dr, rad.m);
             et = kerr_scd_add(et, dt, ang.m);
@@ -206,7 +219,9 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
         vec3 pts[5];
         k = 0;
         [[dont_unroll]] do {
-            pts[k] = kerr_world(min(rk[k], r_far), ck[k], turn * ph[k], a, cp, sp, to_m);
+            float dphi = KERR_INSIDE ? turn * ph[k] + shift_o - kerr_ingoing_shift(kreal(rk[k]), kreal(a))
+                                     : turn * ph[k];
+            pts[k] = kerr_world(min(rk[k], r_far), ck[k], dphi, a, cp, sp, to_m);
         } while (++k < 5);
         volume_chords(pts, lam, hit.glow, hit.trans);
         if (hit.trans < 0.003 || last) return;

@@ -42,6 +42,8 @@
 #include "kerr/legendre.glsl"
 #include "kerr/radial.glsl"
 #include "kerr/angular.glsl"
+#include "kerr/camera.glsl"
+#include "kerr/interior.glsl"
 #include "kerr/volume.glsl"
 
 // The coordinate time (in M) the light takes from Mino time tau on the path
@@ -66,11 +68,6 @@ float kerr_travel_time(KerrRadial rad, KerrAngular ang, float a, float lam, floa
         sum += w * ((rho2 / delta) * (rho2 - a * lam) + a * (lam - a * (1.0 - ct * ct)));
     } while (++i < 8);
     return 0.5 * tau * sum;
-}
-
-// The spin a* as its two f32 halves (params.rs): exact to f64.
-kreal kerr_spin() {
-    return kreal(P.metric.spin_hi) + kreal(P.metric.spin_lo);
 }
 
 // The ZAMO is the frame the closed form starts from: the observer's
@@ -101,75 +98,6 @@ float metric_disk_radius(vec3 p) {
     kreal rho = kreal(length(p - P.metric.holes[0].xyz));
     kreal a = 0.5 * kreal(P.metric.holes[0].w) * kerr_spin();
     return float(sqrt(max(rho * rho - a * a, 0.0)));
-}
-
-// The camera's place and a pixel's photon: the Boyer-Lindquist position,
-// the ZAMO there (alpha, omega), the constants lambda and eta, and the
-// signs of the backward motion (kerr_camera).
-struct KerrCamera {
-    kreal a, to_m;       // the spin; M per world unit
-    kreal r, c, cp, sp;  // r, cos theta, cos and sin of phi
-    kreal alpha, omega;  // the ZAMO's lapse and angular velocity
-    kreal lam, eta, theta_o;
-    float s_r, s_th;
-    float turn;          // the sign of the photon's energy E (see kerr_camera)
-};
-
-// The camera at rel (from the hole) and the photon arriving along d (the
-// ZAMO's frame, world axes). A photon with E < 0 (inside the ergoregion)
-// keeps lambda = L / E and eta = Q / E^2, finite, and the same r and theta
-// motion per unit |E| of Mino time; its azimuth and time run the other way
-// along the backward ray (turn = -1), and it cannot have come from
-// infinity (the disk where it lies inside the ergoregion, or the horizon).
-// False only at E = 0 exactly, where lambda and eta are unbounded.
-bool kerr_camera(vec3 rel, vec3 d, out KerrCamera k) {
-    vec3 e1 = P.disk.e1, nrm = P.disk.normal, e2 = P.disk.e2;
-    kreal a = kerr_spin();
-    k.a = a;
-    // Lengths in M = rs / 2: position and direction in the hole's frame.
-    k.to_m = 2.0 / kreal(P.metric.holes[0].w);
-    kvec3 p = k.to_m * kvec3(dot(rel, e1), dot(rel, nrm), dot(rel, e2));
-    kvec3 dd = normalize(kvec3(dot(d, e1), dot(d, nrm), dot(d, e2)));
-    // On the spin axis phi is undefined and lambda = 0 for every ray: the
-    // camera moves 1e-6 of its distance off the axis, where the near-axis
-    // form (the partner of Pi(-N), N ~ 1 / lambda^2) carries each ray's
-    // sweep of phi past the pole.
-    if (p.x * p.x + p.z * p.z < 1e-12 * dot(p, p)) p.x = 1e-6 * length(p);
-    // Boyer-Lindquist position and the ZAMO there (no trigonometry: cos
-    // and sin of theta and phi straight from the coordinates).
-    kreal w = dot(p, p) - a * a;
-    kreal r = sqrt(0.5 * (w + sqrt(w * w + 4.0 * a * a * p.y * p.y)));
-    kreal c = p.y / r;
-    kreal s = sqrt(max(1.0 - c * c, 0.0));
-    kreal rho = sqrt(r * r + a * a);
-    kreal ph_len = sqrt(p.x * p.x + p.z * p.z);
-    k.r = r;
-    k.c = c;
-    k.cp = ph_len > 0.0 ? p.x / ph_len : 1.0;
-    k.sp = ph_len > 0.0 ? -p.z / ph_len : 0.0;
-    kreal cp = k.cp, sp = k.sp;
-    kreal sig = r * r + a * a * c * c;
-    kreal delta = r * r - 2.0 * r + a * a;
-    kreal big_a = (r * r + a * a) * (r * r + a * a) - a * a * delta * s * s;
-    k.alpha = sqrt(sig * delta / big_a);
-    k.omega = 2.0 * a * r / big_a;
-    kreal varpi = sqrt(big_a / sig) * s;
-    kreal rs = sqrt(sig);
-    kvec3 er = kvec3(r * s * cp, rho * c, -r * s * sp) / rs;
-    kvec3 et = kvec3(rho * c * cp, -r * s, -rho * c * sp) / rs;
-    kvec3 ep = kvec3(-sp, 0.0, -cp);
-    kreal dr = dot(dd, er), dt = dot(dd, et), dph = dot(dd, ep);
-    kreal en = k.alpha - k.omega * varpi * dph;
-    kreal l = -varpi * dph;
-    kreal pth = rs * dt;
-    kreal qq = pth * pth + c * c * (l * l / (s * s) - a * a * en * en);
-    k.lam = l / en;
-    k.eta = qq / (en * en);
-    k.s_r = dr < 0.0 ? -1.0 : 1.0;
-    k.s_th = dt < 0.0 ? -1.0 : 1.0;
-    k.theta_o = (pth / en) * (pth / en);
-    k.turn = en < 0.0 ? -1.0 : 1.0;
-    return en != 0.0;
 }
 
 // The first of the disk's crossings from the n-th on (an arithmetic
@@ -228,7 +156,13 @@ Hit metric_trace(vec3 x, vec3 d) {
     vec3 e1 = P.disk.e1, nrm = P.disk.normal, e2 = P.disk.e2;
     vec3 rel = x - P.metric.holes[0].xyz;
     KerrCamera cam;
-    if (!kerr_camera(rel, d, cam)) return hit;  // E = 0 exactly: the edge between the signs
+    if (KERR_INSIDE) {
+        int universe = kerr_falling_camera(rel, d, cam);
+        if (universe < 0) hit.outcome = OUT_OTHER_UNIVERSE;
+        if (universe <= 0) return hit;
+    } else if (!kerr_camera(rel, d, cam)) {
+        return hit;  // E = 0 exactly: the edge between the signs
+    }
     kreal lam = cam.lam, eta = cam.eta;
     KerrRadial rad = kerr_radial(cam.a, lam, eta, cam.r, cam.s_r);
     KerrAngular ang = kerr_angular(cam.a, lam, eta, cam.c, cam.theta_o, cam.s_th);
@@ -246,13 +180,15 @@ Hit metric_trace(vec3 x, vec3 d) {
     }
     kerr_phi_start(rad, ang);
     float af = float(cam.a), lamf = float(lam), to_m = float(cam.to_m);
-    // The shifts are measured by the camera's ZAMO (disk.glsl, volume.glsl).
-    kerr_zamo_g = float((1.0 - cam.omega * lam) / cam.alpha);
+    // The shifts are measured by the camera's ZAMO (disk.glsl, volume.glsl),
+    // or inside by the falling camera itself.
+    kerr_zamo_g = float(cam.inv_e);
     observer_lapse = float(cam.alpha);
     if (volumetric() && eta > 0.0 && rad.kcase != 4) {
         bool in_slab = abs(dot(rel, nrm)) < 1.5 * P.volume.half_height;
+        float shift_o = KERR_INSIDE ? kerr_ingoing_shift(cam.r, cam.a) : 0.0;
         kerr_volume(rad, ang, af, lamf, float(eta), float(cam.cp), float(cam.sp), to_m, in_slab, cam.turn,
-                    hit);
+                    shift_o, hit);
         if (hit.trans < 0.003) {
             hit.outcome = OUT_CAPTURED;  // opaque: nothing behind shows
             return hit;
@@ -278,8 +214,13 @@ Hit metric_trace(vec3 x, vec3 d) {
             return hit;
         }
         // The azimuth there: phi = phi_o + dphi.
-        vec2 ct = kerr_end(rad, ang, af, lamf, float(eta), t, end);
-        ct.y *= cam.turn;
+        vec2 ct;
+        if (KERR_INSIDE) {
+            ct = kerr_inside_end(rad, ang, cam, lamf, float(eta), t, on_disk ? rc : 1e31);
+        } else {
+            ct = kerr_end(rad, ang, af, lamf, float(eta), t, end);
+            ct.y *= cam.turn;
+        }
         vec2 cs = cos_sin_precise(ct.y);
         float cph = cpf * cs.x - spf * cs.y, sph = spf * cs.x + cpf * cs.y;
         if (on_disk) {
@@ -289,7 +230,10 @@ Hit metric_trace(vec3 x, vec3 d) {
             float g = kerr_disk_g(rc, af, lamf);
             float delay = 0.0;
 #ifndef GEODESIC_AOV
-            if (LIGHT_DELAY) delay = cam.turn * kerr_travel_time(rad, ang, af, lamf, t) / to_m;
+            if (LIGHT_DELAY) {
+                delay = KERR_INSIDE ? kerr_inside_delay(rad, ang, cam, lamf, float(eta), t, rc)
+                                    : cam.turn * kerr_travel_time(rad, ang, af, lamf, t) / to_m;
+            }
             if (kerr_disk_light(hit, stop, rc, to_m, pos, g, delay) < 1.0) continue;
 #endif
             hit.outcome = OUT_DISK;

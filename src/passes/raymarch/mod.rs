@@ -141,6 +141,10 @@ pub struct Variant {
     /// A falling camera of one non-rotating hole: its pixels become rays
     /// by the rain form, outside, at and inside the horizon (constant 11).
     pub rain_form: bool,
+    /// A falling camera between a spinning hole's horizons: its photons
+    /// from the metric's falling frame, azimuth and time in ingoing form
+    /// (constant 12; never split).
+    pub kerr_inside: bool,
 }
 
 impl Variant {
@@ -166,6 +170,7 @@ impl Variant {
                 == crate::scene::TemperatureProfile::PageThorne,
             projection: scene.camera.projection.gpu_id(),
             rain_form: spacetime.camera_observer(scene).rain.is_some(),
+            kerr_inside: spacetime.camera_inside_spinning(scene),
         }
     }
 
@@ -173,7 +178,11 @@ impl Variant {
     /// deferred passes when `split` and the variant has a deferred pass
     /// ([`crate::deferred::applies`]), else itself.
     pub fn stages(self, split: bool) -> Vec<Variant> {
-        if split && deferred::applies(self.path, self.disk == glsl::DISK_THIN) && !self.aov {
+        if split
+            && deferred::applies(self.path, self.disk == glsl::DISK_THIN)
+            && !self.aov
+            && !self.kerr_inside
+        {
             [glsl::STAGE_TRACE, glsl::STAGE_DEFERRED]
                 .map(|stage| Variant { stage, ..self })
                 .to_vec()
@@ -184,7 +193,7 @@ impl Variant {
 
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against include/variant.glsl).
-    pub const CONSTANT_NAMES: [&'static str; 12] = [
+    pub const CONSTANT_NAMES: [&'static str; 13] = [
         "DISK_KIND",
         "SKY_KIND",
         "GRID_PLANE",
@@ -197,9 +206,10 @@ impl Variant {
         "PAGE_THORNE",
         "PROJECTION",
         "RAIN_FORM",
+        "KERR_INSIDE",
     ];
 
-    pub fn constants(&self) -> [u32; 12] {
+    pub fn constants(&self) -> [u32; 13] {
         [
             self.disk,
             self.sky,
@@ -213,12 +223,13 @@ impl Variant {
             u32::from(self.page_thorne),
             self.projection,
             u32::from(self.rain_form),
+            u32::from(self.kerr_inside),
         ]
     }
 
     pub fn name(&self) -> String {
         format!(
-            "raymarch{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {}, page-thorne {}, projection {}, rain form {})",
+            "raymarch{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {}, page-thorne {}, projection {}, rain form {}, kerr inside {})",
             if self.aov { " aov" } else { "" },
             self.path,
             self.disk,
@@ -232,7 +243,8 @@ impl Variant {
             self.observer_moves,
             self.page_thorne,
             self.projection,
-            self.rain_form
+            self.rain_form,
+            self.kerr_inside
         )
     }
 }

@@ -57,6 +57,14 @@ pub struct ObserverParams {
     /// horizon), so that the cancellation in E = 1 + v d_r starts from
     /// one rounding of each (0 for every other camera).
     pub fall_speed: f32,
+    /// A falling camera between a spinning hole's horizons: its
+    /// Boyer-Lindquist r (M) as two f32 halves (hi + lo is the f64 value;
+    /// 0 for every other camera). Near r- the world's azimuth (Boyer-
+    /// Lindquist phi) turns as ln(r - r-): an f32 position's rounding there
+    /// would turn the whole sky by 3e-5 rad at 1.002 r-.
+    pub bl_r_hi: f32,
+    pub bl_r_lo: f32,
+    pub _pad: [f32; 2],
 }
 
 /// The holes.
@@ -314,11 +322,15 @@ fn camera(scene: &Scene, frame: &FrameSpec) -> CameraParams {
 
 fn observer(scene: &Scene, spacetime: &Spacetime) -> ObserverParams {
     let obs = spacetime.camera_observer(scene);
+    let bl_r = spacetime.camera_inside_radius(scene).unwrap_or(0.0);
     ObserverParams {
         velocity: v3(obs.beta),
         kind: obs.kind as u32 as f32,
         radial: v3(obs.rhat),
         fall_speed: obs.rain.unwrap_or(0.0) as f32,
+        bl_r_hi: bl_r as f32,
+        bl_r_lo: (bl_r - f64::from(bl_r as f32)) as f32,
+        _pad: [0.0; 2],
     }
 }
 

@@ -118,7 +118,11 @@ pub enum KerrObserver {
 /// Why an observer cannot stand where it was put.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PlacementError {
+    /// Inside the outer horizon, where only a falling observer can be.
     InsideHorizon,
+    /// A falling observer at Boyer-Lindquist r (the first value) at or
+    /// below the second, the deepest it may go (`falling_floor`).
+    TooDeep(f64, f64),
     /// A static observer inside the ergoregion: (r, r_ergo), M units.
     StaticInErgoregion(f64, f64),
     /// An orbiting observer faster than light: (v, r).
@@ -130,7 +134,15 @@ pub enum PlacementError {
 pub fn observer_velocity(kind: KerrObserver, p: DVec3, a: f64) -> Result<DVec3, PlacementError> {
     let f = LocalFrame::at(p, a);
     if f.r.partial_cmp(&r_horizon(a)) != Some(std::cmp::Ordering::Greater) {
-        return Err(PlacementError::InsideHorizon);
+        // Between the horizons no observer is at rest or on a ZAMO's
+        // worldline: a falling camera's pixels are directions in its own
+        // frame, built from the metric (interior.rs); no velocity.
+        let floor = falling_floor(a);
+        return match kind {
+            KerrObserver::Falling if f.r > floor => Ok(DVec3::ZERO),
+            KerrObserver::Falling => Err(PlacementError::TooDeep(f.r, floor)),
+            _ => Err(PlacementError::InsideHorizon),
+        };
     }
     match kind {
         KerrObserver::Zamo => Ok(DVec3::ZERO),
@@ -166,6 +178,21 @@ pub fn to_zamo_frame(d: DVec3, beta: DVec3) -> (DVec3, f64) {
     let bd = beta.dot(d);
     let dz = ((d / gam - beta + gam / (gam + 1.0) * bd * beta) / (1.0 - bd)).normalize();
     (dz, gam * (1.0 + beta.dot(dz)))
+}
+
+/// How far past the inner horizon's r- a falling camera may not go, as a
+/// fraction of r-: the continued path's inner pole sits that close behind
+/// the camera, and the quadrature of the azimuth (kerr/interior.glsl) keeps
+/// its accuracy down to here.
+pub const INNER_MARGIN: f64 = 1e-3;
+
+/// The deepest Boyer-Lindquist r (M units) a falling camera of a hole of
+/// spin a may reach: (1 + [`INNER_MARGIN`]) r-, and never closer than a
+/// non-rotating hole's limit (0.05 rs = 0.1 M), so that the rule is
+/// continuous in the spin.
+pub fn falling_floor(a: f64) -> f64 {
+    let r_minus = a * a / r_horizon(a);
+    ((1.0 + INNER_MARGIN) * r_minus).max(2.0 * crate::spacetime::FALLING_MIN_R)
 }
 
 /// The outer horizon r+ = 1 + sqrt(1 - a^2) (M units).

@@ -29,8 +29,8 @@ use std::f64::consts::PI;
 use glam::DVec3;
 
 pub use frame::{
-    Constants, KerrObserver, LocalFrame, PlacementError, observer_velocity, r_horizon,
-    to_zamo_frame,
+    Constants, KerrObserver, LocalFrame, PlacementError, falling_floor, observer_velocity,
+    r_horizon, to_zamo_frame,
 };
 use radial::Radial;
 
@@ -231,6 +231,8 @@ pub fn disk_g_of_constants(r: f64, a: f64, energy: f64, l: f64) -> f64 {
 /// Traces the pixel direction `d` (unit, the observer's frame, hole-frame
 /// axes) of a camera of `observer` at `position` (r_s): aberrated into the
 /// ZAMO's frame, and a disk's g multiplied by the observer's Doppler factor.
+/// A falling camera between the horizons has no ZAMO there: refused here as
+/// InsideHorizon (its paths: [`interior::trace_falling_inside`]).
 pub fn trace(
     position: DVec3,
     d: DVec3,
@@ -239,6 +241,10 @@ pub fn trace(
     disk: Option<KerrDisk>,
 ) -> Result<KerrRay, PlacementError> {
     let beta = observer_velocity(observer, 2.0 * position, spin)?;
+    if LocalFrame::at(2.0 * position, spin).r <= r_horizon(spin) {
+        // A falling camera between the horizons: interior::trace_falling_inside.
+        return Err(PlacementError::InsideHorizon);
+    }
     let (dz, doppler) = to_zamo_frame(d, beta);
     let mut ray = trace_zamo(position, dz, spin, disk);
     if let KerrOutcome::Disk { g, .. } = &mut ray.outcome {
