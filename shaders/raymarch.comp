@@ -133,7 +133,7 @@ vec3 path_color(Hit hit, Footprint fp, float pixel_angle) {
         // Light from rest at infinity, as the camera sees it: brightness
         // by g^4, colour as 6500 K blackbody light's (the switch sky_shift).
         if (P.sky.shift > 0.5) {
-            float g = observer_g, g2 = g * g;
+            float g = observer_g * kerr_zamo_g, g2 = g * g;
             color *= (g2 * g2) * blackbody(6500.0 * g) / blackbody(6500.0);
         }
     }

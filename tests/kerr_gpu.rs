@@ -351,7 +351,7 @@ fn impossible_spinning_scenes_are_refused_with_the_key_and_the_reason() {
         (
             "[[black_hole]]\nspin = 0.99\n[camera]\nposition = [0.3, 0.0, 0.1]\nlook_at = [0.0, 0.0, 5.0]\nobserver = \"zamo\"\n",
             "camera.observer = \"zamo\"",
-            "inside the spinning hole's horizon",
+            "inside the spinning hole's horizon (r+ = 0.5705 rs), where only a \"falling\"",
         ),
         (
             "[[black_hole]]\nspin = 0.9\n[camera]\nobserver = \"flat\"\n",
@@ -359,7 +359,20 @@ fn impossible_spinning_scenes_are_refused_with_the_key_and_the_reason() {
             "spin = 0",
         ),
     ];
-    for (toml, key, why) in cases {
+    // A falling camera between the horizons of a* = 0.9 at Boyer-Lindquist
+    // r = 1.0005 r- and at 0.8 r- (in the plane: rho^2 = r^2 + a^2, rs units).
+    let r_minus = 0.5 * 0.81 / kerr::r_horizon(0.9);
+    let deep = [1.0005, 0.8].map(|f: f64| {
+        let rho = ((f * r_minus).powi(2) + 0.45f64.powi(2)).sqrt();
+        format!(
+            "[[black_hole]]\nspin = 0.9\n[camera]\nposition = [0.0, 0.0, {}]\nlook_at = [0.0, 0.0, -5.0]\nobserver = \"falling\"\n",
+            -rho
+        )
+    });
+    let deeper = deep
+        .iter()
+        .map(|toml| (toml.as_str(), "camera.position", "inner horizon r- = 0.282"));
+    for (toml, key, why) in cases.into_iter().chain(deeper) {
         let dir = scratch();
         let scene = path_in(&dir, "scene.toml");
         std::fs::write(&scene, toml).unwrap();

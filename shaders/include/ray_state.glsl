@@ -23,6 +23,13 @@ float observer_lapse = 1.0;
 float rain_energy = 1.0;
 float rain_k2 = -1.0;
 
+// A spinning hole's camera: 1 / E = (1 - omega lambda) / alpha, what turns
+// a shift seen from infinity into the one the camera's ZAMO (or, between
+// the horizons, the falling camera itself) sees: the g of light from rest
+// at infinity before the observer's own Doppler factor (set per pixel by
+// metric/kerr.glsl; 1 for every other metric).
+float kerr_zamo_g = 1.0;
+
 // Per-pixel offset of the volume's samples within their spacing, set by
 // main(): a fixed spacing would show as rings where rays run along the
 // density gradient; a hashed offset turns them into fine, stable grain.

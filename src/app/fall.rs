@@ -52,8 +52,12 @@ impl WindowFall {
     /// say (an orbit of [`LOOK`] rs around the point it looks at: at the
     /// start, the hole).
     pub fn orbit_at(&self, orbit: &Orbit, scene: &Scene, now: Instant) -> Orbit {
+        self.orbit_after(orbit, scene, now.duration_since(self.began).as_secs_f64())
+    }
+
+    /// The same `t` seconds into the fall (past `fall_seconds`: its end).
+    pub fn orbit_after(&self, orbit: &Orbit, scene: &Scene, t: f64) -> Orbit {
         let target = scene.fall_target_as(ObserverKind::Falling);
-        let t = now.duration_since(self.began).as_secs_f64();
         let anim = &scene.animation;
         let r = anim.fall_radius(self.r0, target.rs, anim.fall_end(&target, self.line), t);
         let camera = target.centre + r * self.line;

@@ -162,7 +162,20 @@ impl Running {
     fn step_fall(&mut self, asked: Option<bool>) {
         let key = std::mem::take(&mut self.wants_fall).then_some(self.fall.is_none());
         match asked.or(key) {
-            Some(true) => self.fall = WindowFall::start(&self.orbit, &self.scene),
+            Some(true) => {
+                self.fall = WindowFall::start(&self.orbit, &self.scene);
+                // The fall's end too: a camera that crosses a spinning
+                // hole's horizon switches ray march there (KERR_INSIDE),
+                // built now rather than at the crossing.
+                if let (Some(f), Some(renderer)) = (&self.fall, self.renderer.as_mut()) {
+                    let mut end = self.scene.clone();
+                    let t = self.scene.animation.fall_seconds;
+                    end.camera = f.orbit_after(&self.orbit, &self.scene, t).camera();
+                    if let Err(e) = renderer.prepare_scene(&end) {
+                        self.gui.error = Some(e.to_string());
+                    }
+                }
+            }
             Some(false) => {
                 if let Some(f) = self.fall.take() {
                     self.orbit = f.before;

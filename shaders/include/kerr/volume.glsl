@@ -11,10 +11,6 @@
 #include "kerr/angular.glsl"
 #include "kerr/interior.glsl"
 
-// 1 / E = (1 - omega lambda) / alpha at the camera: what turns a shift seen
-// from infinity into the one the camera's ZAMO (or, between the horizons,
-// the falling camera) sees (set by metric_trace).
-float kerr_zamo_g = 1.0;
 
 // The gas's shift (volume.glsl): a prograde Keplerian emitter at the
 // Boyer-Lindquist radius of disk-frame distance r (rs), as the thin disk's

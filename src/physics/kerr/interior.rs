@@ -143,7 +143,7 @@ mod tests {
     use crate::physics::kerr::schild::{SchildObserver, trace_schild_as};
     use crate::physics::sphere_direction;
 
-    /// Between the horizons of a* = 0.9, down to 1.07 r-, the closed form
+    /// Between the horizons of a* = 0.9, down to 1.002 r-, the closed form
     /// continued through r+ meets the Kerr-Schild integration: the same
     /// universe, and sky direction, disk radius, azimuth and g to 1e-6.
     #[test]
@@ -154,12 +154,13 @@ mod tests {
             outer: 8.0,
         });
         let mut seen = [0usize; 4];
-        // Boyer-Lindquist r = 0.83, 0.77 (0.8 r+ and below) and 0.61 M
-        // (1.07 r-): r+ = 1.436, r- = 0.564.
+        // Boyer-Lindquist r = 0.83, 0.77 (0.8 r+ and below), 0.61 M (1.07
+        // r-) and 0.5652 M (1.002 r-): r+ = 1.436, r- = 0.564.
         for at in [
             DVec3::new(0.0, 0.2, -0.6),
             DVec3::new(0.5, -0.1, 0.3),
             DVec3::new(0.0, 0.05, -0.54),
+            DVec3::new(0.0, 0.077_504_939_785, -0.511_015_902_982),
         ] {
             let r = LocalFrame::at(2.0 * at, a).r;
             assert!(r < r_horizon(a) && r > 2.0 - r_horizon(a), "{at}: r = {r}");
