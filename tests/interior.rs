@@ -250,12 +250,20 @@ fn frames_through_the_crossing_change_as_frames_outside_do() {
         )
         .1
     };
+    let farther = aov_change(&aov(1.101), &aov(1.099));
+    println!("at 1.1 rs {farther:?}");
+    assert_continuous(&aov);
+}
+
+/// Frames of `aov` (a view at a fraction of the horizon's radius) at 1 +-
+/// 1e-3 differ no more than frames at 1.005 and 1.003 do (mean escape
+/// direction, and outcomes but for two pixels).
+fn assert_continuous(aov: &dyn Fn(f64) -> image::Rgba32FImage) {
     let across = aov_change(&aov(1.0 + 1e-3), &aov(1.0 - 1e-3));
     let outside = aov_change(&aov(1.005), &aov(1.003));
-    let farther = aov_change(&aov(1.101), &aov(1.099));
     println!(
         "mean escape-direction change and outcome changes: across the horizon {across:?}, \
-         just outside {outside:?}, at 1.1 rs {farther:?}"
+         just outside {outside:?}"
     );
     assert!(across.0 > 0.0, "the frames did not change at all");
     assert!(
@@ -288,17 +296,7 @@ fn frames_through_a_spinning_horizon_change_as_frames_outside_do() {
         )
         .1
     };
-    let across = aov_change(&aov(1.0 + 1e-3), &aov(1.0 - 1e-3));
-    let outside = aov_change(&aov(1.005), &aov(1.003));
-    println!(
-        "mean escape-direction change and outcome changes: across r+ {across:?}, just outside \
-         {outside:?}"
-    );
-    assert!(across.0 > 0.0, "the frames did not change at all");
-    assert!(
-        across.0 <= 1.5 * outside.0 && across.1 <= 1.5 * outside.1 + 2.0 / (96.0 * 54.0),
-        "across {across:?} against outside {outside:?}"
-    );
+    assert_continuous(&aov);
     let hair = aov(1.0 - 1e-7);
     assert!(
         hair.pixels().all(|p| p.0.iter().all(|v| v.is_finite())),

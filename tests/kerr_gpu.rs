@@ -450,3 +450,29 @@ fn the_volumetric_disk_follows_a_spinning_holes_light_paths() {
     println!("a* = 0.9, shifts on: left {left:.0}, right {right:.0}");
     assert!(right > 1.3 * left, "left {left}, right {right}");
 }
+
+/// Between a spinning hole's horizons the paths need the device's 64-bit
+/// floats (the 32-bit build misses by up to a radian near r-): without
+/// them (`BLACKHOLE_NO_F64=1` here) such a camera is refused with the
+/// reason, exit 1 and no file, instead of drawn wrong.
+#[test]
+fn inside_a_spinning_horizon_without_64_bit_floats_is_refused() {
+    let dir = scratch();
+    let scene = path_in(&dir, "scene.toml");
+    std::fs::write(
+        &scene,
+        "[[black_hole]]\nspin = 0.9\n[camera]\nposition = [0.0, 0.2, -0.55]\nlook_at = [0.0, 2.0, -5.0]\nobserver = \"falling\"\n",
+    )
+    .unwrap();
+    let out = path_in(&dir, "out.png");
+    let mut c = blackhole();
+    c.args(["render", "--width", "32", "--height", "18", "--scene"])
+        .arg(&scene)
+        .arg("--out")
+        .arg(&out)
+        .env("BLACKHOLE_NO_F64", "1");
+    let (code, _, stderr) = run(c);
+    assert_eq!(code, 1, "{stderr}");
+    assert!(stderr.contains("64-bit floats"), "{stderr}");
+    assert!(!out.exists());
+}

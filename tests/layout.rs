@@ -147,6 +147,13 @@ fn raymarch_params_match_the_glsl_block() {
             offset_of!(MetricParams, spin_lo),
         ],
     );
+}
+
+/// The same for the block's second half: the integrator, the disk, the
+/// volume and the sky.
+#[test]
+fn raymarch_params_match_the_glsl_block_past_the_metric() {
+    use blackhole::passes::raymarch::params::*;
     raymarch_struct_matches(
         "IntegratorParams",
         &[

@@ -173,6 +173,7 @@ impl Running {
                     end.camera = f.orbit_after(&self.orbit, &self.scene, t).camera();
                     if let Err(e) = renderer.prepare_scene(&end) {
                         self.gui.error = Some(e.to_string());
+                        self.fall = None;
                     }
                 }
             }

@@ -310,8 +310,9 @@ mod tests {
         // (20^1.5 - 1) / (20^1.5 - 0.05^1.5) of the way.
         let frac = (20f64.powf(1.5) - 1.0) / (20f64.powf(1.5) - 0.05f64.powf(1.5));
         assert!((r(10.0 * frac) - 1.0).abs() < 1e-9, "{}", r(10.0 * frac));
-        // A spinning hole's fall stops just outside its horizon: at a* =
-        // 0.9, r+ = (1 + sqrt(1 - 0.81)) / 2 rs, a = 0.45 rs.
+        // Toward a spinning hole, a fall that may not go in stops just
+        // outside its horizon: at a* = 0.9, r+ = (1 + sqrt(1 - 0.81)) / 2
+        // rs, a = 0.45 rs.
         let spinning = FallTarget {
             spin: 0.9,
             interior: false,
@@ -321,6 +322,23 @@ mod tests {
         let r_plus: f64 = 0.5 * (1.0 + 0.19f64.sqrt());
         let end = 1.05 * (r_plus * r_plus + 0.45 * 0.45).sqrt();
         assert!((DVec3::from(p).length() - end).abs() < 1e-12);
+        // A falling camera goes in, to 1.01 x (1 + 1e-3) r- (Boyer-
+        // Lindquist, r- = 0.81 / (2 r+ / rs) rs): on the equator at
+        // rho = sqrt(r^2 + a^2), on the axis at rho = r.
+        let inside = FallTarget { spin: 0.9, ..*HOLE };
+        let r_end = 1.01 * 1.001 * 0.5 * 0.81 / (2.0 * r_plus);
+        for (start, rho) in [
+            ([0.0, 0.0, -20.0], (r_end * r_end + 0.45 * 0.45).sqrt()),
+            ([0.0, 20.0, 0.0], r_end),
+        ] {
+            let base = Camera {
+                position: start,
+                ..Camera::default()
+            };
+            let p = DVec3::from(anim.camera_at(&base, 99.0, &inside).position);
+            assert!((p.length() - rho).abs() < 1e-12, "{start:?}: {p}");
+            assert!((inside.radius_at(p.length(), p.normalize()) - r_end).abs() < 1e-12);
+        }
         // dr/dτ = -√(rs/r): the speed grows as it falls.
         let (a, b, c) = (r(2.0), r(5.0), r(8.0));
         assert!(a > b && b > c && (a - b) < (b - c), "{a} {b} {c}");

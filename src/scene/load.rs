@@ -58,7 +58,7 @@ pub const PRESETS: &[(&str, &str, &str)] = &[
     ),
     (
         "plunge",
-        "falling into the gargantua hole (a* = 0.998) to just outside its horizon",
+        "falling into the gargantua hole (a* = 0.998), through its horizon",
         include_str!("presets/plunge.toml"),
     ),
     (

@@ -6,6 +6,7 @@ pub mod animation;
 mod frames;
 pub mod load;
 mod locate;
+mod refusal;
 pub mod schema;
 mod validate;
 

@@ -100,7 +100,7 @@ vec2 kerr_ingoing_rates(KerrRadial rad, float r, float dm, float sigma, float tu
     float big_k = eta + (lam - a) * (lam - a);
     bool near = abs(delta) < 0.1 && sigma * turn * x > 0.0;
     float phi_rate = near ? sigma * a * (2.0 * x + delta - big_k) / (sq + sigma * turn * x)
-                   : r > 4.0 ? a * (sigma * sqrt(f) - turn * x * u * u) / (1.0 - 2.0 * u + a * a * u * u)
+                   : r > 4.0 ? a * (sigma * sqrt(f) - turn * (2.0 - a * lam * u) * u) / (1.0 - 2.0 * u + a * a * u * u)
                              : a * (sigma * sq - turn * x) / delta;
     if (!timed) return vec2(phi_rate, 0.0);
     float p = r * r + a * a - a * lam;

@@ -215,9 +215,18 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
         vec3 pts[5];
         k = 0;
         [[dont_unroll]] do {
-            float dphi = KERR_INSIDE ? turn * ph[k] + shift_o - kerr_ingoing_shift(kreal(rk[k]), kreal(a))
+            // (Within 5 % of r+, where the world's azimuth winds without
+            // end, the point's is held at that distance's: no gas lies
+            // there, inside the photon sphere, and its chords stay short.)
+            // (A window's last point, stepped by the addition theorem, may
+            // overshoot an escape's end at infinity, where the case-3 form
+            // turns negative: drawn in to r_far too.)
+            float rw = rk[k] >= 0.0 ? min(rk[k], r_far) : r_far;
+            float rh = rad.rh.x;
+            float rb = abs(rw / rh - 1.0) < 0.05 ? rh * (rw < rh ? 0.95 : 1.05) : rw;
+            float dphi = KERR_INSIDE ? turn * ph[k] + shift_o - kerr_ingoing_shift(kreal(rb), kreal(a))
                                      : turn * ph[k];
-            pts[k] = kerr_world(min(rk[k], r_far), ck[k], dphi, a, cp, sp, to_m);
+            pts[k] = kerr_world(rw, ck[k], dphi, a, cp, sp, to_m);
         } while (++k < 5);
         volume_chords(pts, lam, hit.glow, hit.trans);
         if (hit.trans < 0.003 || last) return;

@@ -301,6 +301,16 @@ impl RaymarchPipelines {
     /// driver such as lavapipe every branch runs under a mask for every
     /// pixel, so a branch not taken costs as much as one taken.
     pub fn pipeline(&self, variant: Variant) -> Result<Arc<ComputePipeline>> {
+        if variant.kerr_inside && !self.features.kerr_f64 {
+            // (Its 32-bit build misses by 1e-3 rad at 0.8 r+ and by up to a
+            // radian near r-: tests/kerr_gpu.rs's cameras.)
+            return Err(crate::Error::Other(
+                "a falling camera inside a spinning hole's horizon needs 64-bit floats in \
+                 shaders (shaderFloat64), which this device lacks or BLACKHOLE_NO_F64=1 turns \
+                 off: its light paths are not drawn in 32-bit floats"
+                    .into(),
+            ));
+        }
         self.cache.get(variant, || {
             let build = if variant.aov {
                 RaymarchBuild::Aov

@@ -1,0 +1,101 @@
+//! The words of a camera's placement refusals
+//! ([`crate::spacetime::Spacetime::placement`]):
+//! each names the key, the value and what the user can do instead.
+
+use super::Camera;
+use super::locate::Seg::{self, Key};
+use super::validate::{Check, FALLING_MIN_R, fail, vec3};
+use crate::spacetime::Refusal;
+
+/// Why the camera's observer cannot stand where it is
+/// ([`Spacetime::placement`]), worded for the scene's keys.
+pub(super) fn refuse(c: &Camera, at: &[Seg], refusal: Refusal) -> Check {
+    let key = |k: &'static str| [at, &[Key(k)]].concat();
+    let position = || vec3(&c.position);
+    let name = format!("\"{}\"", c.observer.name());
+    match refusal {
+        Refusal::InsideHorizon { hole } => fail(
+            &key("position"),
+            position(),
+            format!(
+                "is inside the horizon of black_hole[{hole}], where only a \"falling\" observer \
+                 can be (nothing else stands still or orbits there): set observer = \"falling\""
+            ),
+        ),
+        Refusal::InsideAbsorber { hole, several } => fail(
+            &key("position"),
+            position(),
+            if several {
+                format!(
+                    "is inside the horizon of black_hole[{hole}]; with several holes the light \
+                     paths are their pulls summed, an approximation that says nothing about an \
+                     interior: only one non-rotating hole's \"falling\" camera may go inside"
+                )
+            } else {
+                format!(
+                    "is inside black_hole[{hole}] with gravity off, where a hole is an absorbing \
+                     sphere: turn gravity on to fall in with observer = \"falling\""
+                )
+            },
+        ),
+        Refusal::InsidePhotonSphere { r, photon } => fail(
+            &key("position"),
+            position(),
+            format!(
+                "is inside the photon sphere (r = {r:.4} <= 1.5 rs = {photon}), where no \
+                 \"orbiting\" observer can be"
+            ),
+        ),
+        Refusal::OnDiskAxis => fail(
+            &key("position"),
+            position(),
+            "is on the disk's axis, where an \"orbiting\" observer's orbit has no direction",
+        ),
+        Refusal::FallingTooClose { r, rs } => fail(
+            &key("position"),
+            position(),
+            format!(
+                "is {:.4} rs from the singularity; a \"falling\" observer must stay at r >= \
+                 {FALLING_MIN_R} rs (closer, the light paths lose the accuracy the renderer \
+                 promises: docs/inside-the-horizon.md)",
+                r / rs
+            ),
+        ),
+        Refusal::FlatAroundSpin => fail(
+            &key("observer"),
+            name,
+            "needs spin = 0: \"flat\" is the Schwarzschild comparison mapping",
+        ),
+        Refusal::InsideSpinningHorizon { horizon } => fail(
+            &key("observer"),
+            name,
+            format!(
+                "stands inside the spinning hole's horizon (r+ = {horizon:.4} rs), where only a \
+                 \"falling\" observer can be (nothing else stands still or orbits there): set \
+                 observer = \"falling\""
+            ),
+        ),
+        Refusal::FallingTooDeep { r, floor, inner } => fail(
+            &key("position"),
+            position(),
+            format!(
+                "is at Boyer-Lindquist r = {r:.6} rs; a \"falling\" camera of a spinning hole must \
+                 stay above r = {floor:.6} rs, (1 + 1e-3) times the inner horizon r- = {inner:.6} \
+                 rs (beyond r- the paths are not drawn) and at least {FALLING_MIN_R} rs from the \
+                 centre (docs/inside-the-horizon.md)"
+            ),
+        ),
+        Refusal::StaticInErgoregion { r, r_ergo } => fail(
+            &key("observer"),
+            name,
+            format!(
+                "cannot stand inside the ergoregion (r = {r:.4} rs, r_ergo = {r_ergo:.4} rs): use \"zamo\" or \"falling\""
+            ),
+        ),
+        Refusal::OrbitTooFast { v, r } => fail(
+            &key("observer"),
+            name,
+            format!("would orbit faster than light there (v = {v:.4} c at r = {r:.4} rs)"),
+        ),
+    }
+}
