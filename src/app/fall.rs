@@ -59,7 +59,8 @@ impl WindowFall {
     pub fn orbit_after(&self, orbit: &Orbit, scene: &Scene, t: f64) -> Orbit {
         let target = scene.fall_target_as(ObserverKind::Falling);
         let anim = &scene.animation;
-        let r = anim.fall_radius(self.r0, target.rs, anim.fall_end(&target, self.line), t);
+        let end = anim.fall_end(&target, self.line);
+        let r = anim.fall_distance(&target, self.line, self.r0, end, t);
         let camera = target.centre + r * self.line;
         let mut o = *orbit;
         o.distance = LOOK * target.rs;
