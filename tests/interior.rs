@@ -272,11 +272,13 @@ fn assert_continuous(aov: &dyn Fn(f64) -> image::Rgba32FImage) {
     );
 }
 
-/// The same through a spinning hole's outer horizon (a* = 0.9), where the
-/// camera's frame changes hands: outside, the ZAMO's aberrated by the fall;
-/// inside, the falling frame built from the metric, the azimuth in ingoing
-/// form. Frames at r+ (1 +- 1e-3) differ no more than two frames 2e-3 r+
-/// apart just outside; one 1e-7 r+ inside draws every pixel a number.
+/// The same through a spinning hole's outer horizon (a* = 0.9): frames at
+/// r+ (1 +- 1e-3) differ no more than two frames 2e-3 r+ apart just
+/// outside; a hair (1e-8 r+) to either side every pixel a number. And where
+/// the camera's frame changes hands, at 1.05 r+ (outside it the ZAMO's
+/// aberrated by the fall, inside it the falling frame built from the metric,
+/// the azimuth in ingoing form), frames 2e-4 r+ apart across it differ no
+/// more than two such frames beside it.
 #[test]
 fn frames_through_a_spinning_horizon_change_as_frames_outside_do() {
     let (spin, a) = (0.9f64, 0.45f64);
@@ -297,10 +299,24 @@ fn frames_through_a_spinning_horizon_change_as_frames_outside_do() {
         .1
     };
     assert_continuous(&aov);
-    let hair = aov(1.0 - 1e-7);
+    // A hair from r+ on either side (1e-8, where the ZAMO's frame once gave
+    // every pixel NaN): every pixel a number, and the two frames alike.
+    let (outer, inner) = (aov(1.0 + 1e-8), aov(1.0 - 1e-8));
+    for (hair, side) in [(&outer, "outside"), (&inner, "inside")] {
+        assert!(
+            hair.pixels().all(|p| p.0.iter().all(|v| v.is_finite())),
+            "1e-8 r+ {side}: a pixel is not a number"
+        );
+    }
+    let hair = aov_change(&outer, &inner);
+    assert!(hair.0 < 1e-4 && hair.1 <= 2.0 / (96.0 * 54.0), "{hair:?}");
+    let band = 1.0 + blackhole::physics::kerr::FALLING_FRAME_BAND;
+    let across = aov_change(&aov(band - 1e-4), &aov(band + 1e-4));
+    let beside = aov_change(&aov(band + 3e-4), &aov(band + 5e-4));
+    println!("across the band's edge {across:?}, beside it {beside:?}");
     assert!(
-        hair.pixels().all(|p| p.0.iter().all(|v| v.is_finite())),
-        "1e-7 r+ inside: a pixel is not a number"
+        across.0 <= 1.5 * beside.0 + 1e-5 && across.1 <= 1.5 * beside.1 + 2.0 / (96.0 * 54.0),
+        "across {across:?} against beside {beside:?}"
     );
 }
 

@@ -133,8 +133,8 @@ vec3 rain_to_coordinate(StaticFrame frame, vec3 dir) {
 // static frame there (the metric's, metric_static_frame), then that frame's
 // radial squeeze; its clock and motion scale the redshift it measures
 // (observer_g, observer_lapse). A falling camera of one non-rotating hole
-// takes the rain form instead; one between a spinning hole's horizons keeps
-// its own direction (KERR_INSIDE).
+// takes the rain form instead; one between a spinning hole's horizons (or
+// just outside them) keeps its own direction (KERR_INSIDE).
 vec3 observer_to_coordinate(vec3 origin, vec3 dir) {
     if (int(P.observer.kind) != OBS_FLAT) {
         StaticFrame frame = metric_static_frame(origin);

@@ -44,9 +44,11 @@ layout(constant_id = 10) const int PROJECTION = PROJ_PINHOLE;
 // form (camera.glsl), which holds outside, at and inside the horizon, and
 // the path starts from the camera's own point (lightpath.glsl, path_u).
 layout(constant_id = 11) const bool RAIN_FORM = false;
-// A falling camera between a spinning hole's horizons: its pixels are
-// directions in the falling frame built from the metric (kerr/interior.glsl),
-// and each path's azimuth and time run in their ingoing forms through r+.
+// A falling camera between a spinning hole's horizons or just outside the
+// outer one (within 5 % of r+, where the ZAMO's frame degenerates): its
+// pixels are directions in the falling frame built from the metric
+// (kerr/interior.glsl), and each path's azimuth and time run in their
+// ingoing forms through r+.
 layout(constant_id = 12) const bool KERR_INSIDE = false;
 
 #endif

@@ -136,19 +136,21 @@ impl Spacetime {
     }
 
     /// Whether the scene's camera is a falling camera between a spinning
-    /// hole's horizons (the ray march's `KERR_INSIDE` path).
+    /// hole's horizons, or just outside the outer one (within
+    /// [`crate::physics::kerr::FALLING_FRAME_BAND`] of r+): the ray march's
+    /// `KERR_INSIDE` path, its photons from the metric's falling frame.
     pub fn camera_inside_spinning(&self, scene: &Scene) -> bool {
         self.camera_inside_radius(scene).is_some()
     }
 
-    /// The Boyer-Lindquist r (M) of a falling camera between a spinning
-    /// hole's horizons; None for every other camera.
+    /// The Boyer-Lindquist r (M) of such a camera; None for every other.
     pub fn camera_inside_radius(&self, scene: &Scene) -> Option<f64> {
         let Spacetime::Kerr(k) = self else {
             return None;
         };
         let r = k.radius_of(DVec3::from(scene.camera.position));
-        (scene.camera.observer == ObserverKind::Falling && r <= k.r_plus_m()).then_some(r)
+        let band = (1.0 + crate::physics::kerr::FALLING_FRAME_BAND) * k.r_plus_m();
+        (scene.camera.observer == ObserverKind::Falling && r < band).then_some(r)
     }
 
     /// The observer holding the scene's camera (`[camera] observer` at its

@@ -18,9 +18,12 @@
 #include "kerr/radial.glsl"
 #include "kerr/angular.glsl"
 
-// The falling camera's photon along d: k as kerr_camera fills it (s_r = +1:
-// outward, the only way back between the horizons). 1 for light from our
-// universe, -1 from the other one, 0 at E = 0.
+// The falling camera's photon along d: k as kerr_camera fills it. Between
+// the horizons every backward ray moves outward (s_r = +1) and P(r+) picks
+// the universe; a camera within KERR_INSIDE's band just outside r+ (where
+// the ZAMO's frame, which the fall outruns there, degenerates) takes s_r
+// from the photon's dr. 1 for light from our universe, -1 from the other
+// one, 0 at E = 0.
 int kerr_falling_camera(vec3 rel, vec3 d, out KerrCamera k) {
     kreal s;
     kvec3 dtr;
@@ -31,35 +34,33 @@ int kerr_falling_camera(vec3 rel, vec3 d, out KerrCamera k) {
     kreal sig = r * r + a * a * c * c;
     kreal delta = r * r - 2.0 * r + a * a;
     kreal big_a = (r * r + a * a) * (r * r + a * a) - a * a * delta * s2;
-    // Boyer-Lindquist metric (t, r, theta, phi), its nonzero parts.
-    kreal g_tt = -(1.0 - 2.0 * r / sig), g_tp = -2.0 * a * r * s2 / sig, g_pp = big_a * s2 / sig;
-    kreal g_rr = sig / delta;
-    // The faller's u: u_t = -1, u_phi = 0, dr/dtau = -sqrt(2 r (r^2 + a^2)) / Sigma.
-    kreal ur_up = -sqrt(2.0 * r * (r * r + a * a)) / sig;
-    kreal u_r = g_rr * ur_up;
-    kreal det = g_tt * g_pp - g_tp * g_tp;
-    kreal ut_up = -g_pp / det, up_up = g_tp / det;
-    // Its radial axis: u_r d_t + d_r - u_r (g_tphi / g_phiphi) d_phi, normalised.
-    kreal cp = -u_r * g_tp / g_pp;
-    kreal norm = sqrt(u_r * u_r * g_tt + 2.0 * u_r * cp * g_tp + cp * cp * g_pp + g_rr);
-    // The photon k = u - d_r e_r - d_theta e_theta - d_phi e_phi.
-    kreal k0 = ut_up - dtr.x * u_r / norm;
-    kreal k3 = up_up - dtr.x * cp / norm - dtr.z / sqrt(g_pp);
-    kreal en = -(g_tt * k0 + g_tp * k3);
-    kreal l = g_tp * k0 + g_pp * k3;
-    kreal pth = -sqrt(sig) * dtr.y;
+    // The faller: u_t = -1, u_phi = 0, u_theta = 0 (theta stays: Q = 0),
+    // dr/dtau = -sqrt(2 r (r^2 + a^2)) / Sigma; its radial axis e_r, unit,
+    // orthogonal to u, e_theta and e_phi (the metric's g(e_r, e_r) reduces
+    // to Sigma^2 / A, so nothing of order 1 / Delta is formed). The photon
+    // k = u - d_r e_r - d_theta e_theta - d_phi e_phi then has E = -k_t =
+    // 1 + d_r sqrt(2 r (r^2 + a^2) / A) - d_phi 2 a r sin(theta) /
+    // sqrt(Sigma A), L = k_phi = -d_phi sin(theta) sqrt(A / Sigma),
+    // k_theta = -d_theta sqrt(Sigma), and k^r = -(sqrt(2 r (r^2 + a^2)) +
+    // d_r sqrt(A)) / Sigma: each finite at r+, none cancelling there.
+    kreal fall = sqrt(2.0 * r * (r * r + a * a)), sa = sqrt(big_a), ss = sqrt(sig);
+    kreal en = 1.0 + dtr.x * fall / sa - dtr.z * 2.0 * a * r * s / (ss * sa);
+    kreal l = -dtr.z * s * sa / ss;
+    kreal pth = -ss * dtr.y;
+    kreal k1 = -(fall + dtr.x * sa) / sig;
     k.alpha = 1.0;
     k.omega = 0.0;
-    k.s_r = 1.0;
+    kreal rp = 1.0 + sqrt(1.0 - a * a);
+    bool inside = r < rp;
+    k.s_r = inside || k1 < 0.0 ? 1.0 : -1.0;
     k.s_th = pth > 0.0 ? -1.0 : 1.0;
     k.turn = en < 0.0 ? -1.0 : 1.0;
     if (en == 0.0) return 0;
-    kreal rp = 1.0 + sqrt(1.0 - a * a);
     k.lam = l / en;
     k.eta = (pth * pth + c * c * (l * l / s2 - a * a * en * en)) / (en * en);
     k.theta_o = (pth / en) * (pth / en);
     k.inv_e = 1.0 / en;
-    return en * 2.0 * rp - a * l > 0.0 ? 1 : -1;
+    return !inside || en * 2.0 * rp - a * l > 0.0 ? 1 : -1;
 }
 
 // r - r- at the camera, from its f64 radius.
@@ -92,7 +93,8 @@ float kerr_radial_sign(KerrRadial k, float tau) {
 // does not overflow far out.
 vec2 kerr_ingoing_rates(KerrRadial rad, float r, float dm, float sigma, float turn, float a, float lam, float eta,
                         float ct, bool timed) {
-    float u = 1.0 / r;
+    // (A node a rounding past an escape's end at infinity: its limit there.)
+    float u = r > 0.0 && r < 1e30 ? 1.0 / r : 0.0;
     float f = max(kerr_f_u(u, a, lam, eta), 0.0);
     float sq = r * r * sqrt(f);
     float x = 2.0 * r - a * lam;
@@ -100,7 +102,7 @@ vec2 kerr_ingoing_rates(KerrRadial rad, float r, float dm, float sigma, float tu
     float big_k = eta + (lam - a) * (lam - a);
     bool near = abs(delta) < 0.1 && sigma * turn * x > 0.0;
     float phi_rate = near ? sigma * a * (2.0 * x + delta - big_k) / (sq + sigma * turn * x)
-                   : r > 4.0 ? a * (sigma * sqrt(f) - turn * (2.0 - a * lam * u) * u) / (1.0 - 2.0 * u + a * a * u * u)
+                   : u < 0.25 ? a * (sigma * sqrt(f) - turn * (2.0 - a * lam * u) * u) / (1.0 - 2.0 * u + a * a * u * u)
                              : a * (sigma * sq - turn * x) / delta;
     if (!timed) return vec2(phi_rate, 0.0);
     float p = r * r + a * a - a * lam;

@@ -141,9 +141,10 @@ pub struct Variant {
     /// A falling camera of one non-rotating hole: its pixels become rays
     /// by the rain form, outside, at and inside the horizon (constant 11).
     pub rain_form: bool,
-    /// A falling camera between a spinning hole's horizons: its photons
-    /// from the metric's falling frame, azimuth and time in ingoing form
-    /// (constant 12; never split).
+    /// A falling camera between a spinning hole's horizons or just outside
+    /// (`Spacetime::camera_inside_spinning`): its photons from the metric's
+    /// falling frame, azimuth and time in ingoing form (constant 12; never
+    /// split).
     pub kerr_inside: bool,
 }
 

@@ -180,6 +180,14 @@ pub fn to_zamo_frame(d: DVec3, beta: DVec3) -> (DVec3, f64) {
     (dz, gam * (1.0 + beta.dot(dz)))
 }
 
+/// How far outside the outer horizon a falling camera's pixels still take
+/// the frame built from the metric (the interior's, kerr/interior.glsl), as
+/// a fraction of r+: nearer r+ the ZAMO's frame, which the exterior path
+/// aberrates by the fall, degenerates (the fall's Lorentz factor relative to
+/// it grows as 1 / sqrt(r - r+), and 32-bit aberration loses what the goals
+/// ask; at 1e-8 rs every pixel was NaN).
+pub const FALLING_FRAME_BAND: f64 = 5e-2;
+
 /// How far past the inner horizon's r- a falling camera may not go, as a
 /// fraction of r-: the continued path's inner pole sits that close behind
 /// the camera, and the quadrature of the azimuth (kerr/interior.glsl) keeps
