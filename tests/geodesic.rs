@@ -61,75 +61,95 @@ struct Figures {
     g: Vec<f64>,
 }
 
-fn compare(name: &str, position: [f64; 3], extra: &str) -> Figures {
-    let (scene, gpu) = common::render_aov(
-        &format!(
-            "[camera]\nposition = [{}, {}, {}]\n{}{extra}",
-            position[0],
-            position[1],
-            position[2],
-            if extra.contains("vfov_deg") {
-                ""
-            } else {
-                "vfov_deg = 60.0\n"
-            },
-        ),
-        W,
-        H,
-    );
-    let frame = scene.camera.frame();
-    let holes: Vec<Hole> = scene
-        .black_holes
-        .iter()
-        .map(|h| Hole {
-            position: DVec3::from(h.position),
-            rs: h.rs,
-        })
-        .collect();
-    let normal = DVec3::from(scene.disk.normal).normalize();
-    let disk = Disk {
-        normal,
-        inner: scene.disk.inner_radius,
-        outer: scene.disk.outer_radius,
-    };
-    let opts = TraceOptions::default();
-    let observer = scene.observer();
-    let disk = (scene.disk.kind == blackhole::scene::DiskKind::Thin).then_some(disk);
-    // Pixel direction (the observer's frame) -> outcome.
-    let cpu_trace = |d: DVec3| {
+/// The f64 side of one camera: the scene's holes, thin disk and observer,
+/// and the rays of its pixels traced by the integrator and, for one hole,
+/// the closed form.
+struct Reference {
+    frame: blackhole::camera::CameraFrame,
+    holes: Vec<Hole>,
+    normal: DVec3,
+    disk: Option<Disk>,
+    observer: blackhole::physics::observer::Observer,
+    opts: TraceOptions,
+    /// One hole with gravity on: the closed form and the conditioning apply.
+    closed_form: bool,
+}
+
+impl Reference {
+    fn of(scene: &blackhole::Scene) -> Reference {
+        let holes: Vec<Hole> = scene
+            .black_holes
+            .iter()
+            .map(|h| Hole {
+                position: DVec3::from(h.position),
+                rs: h.rs,
+            })
+            .collect();
+        let normal = DVec3::from(scene.disk.normal).normalize();
+        let disk = Disk {
+            normal,
+            inner: scene.disk.inner_radius,
+            outer: scene.disk.outer_radius,
+        };
+        Reference {
+            frame: scene.camera.frame(),
+            closed_form: holes.len() == 1 && scene.physics.gravity,
+            holes,
+            normal,
+            disk: (scene.disk.kind == blackhole::scene::DiskKind::Thin).then_some(disk),
+            observer: scene.observer(),
+            opts: TraceOptions::default(),
+        }
+    }
+
+    /// Pixel direction (the observer's frame) -> outcome, integrated.
+    fn trace(&self, d: DVec3) -> Outcome {
+        let v = self.observer.coordinate_direction(d);
         trace(
-            &holes,
-            disk.as_ref(),
-            frame.position,
-            observer.coordinate_direction(d),
-            &opts,
+            &self.holes,
+            self.disk.as_ref(),
+            self.frame.position,
+            v,
+            &self.opts,
         )
         .outcome
-    };
-    let closed = |d: DVec3| {
-        trace_closed(
-            &holes[0],
-            disk.as_ref(),
-            frame.position,
-            observer.coordinate_direction(d),
-        )
-    };
-    // What one disk hit's numbers are: radius, azimuth, g as the observer sees it.
-    let disk_numbers = |d: DVec3, position: DVec3, velocity: DVec3| {
-        let hole = &holes[0];
+    }
+
+    /// The same in closed form.
+    fn closed(&self, d: DVec3) -> Outcome {
+        let v = self.observer.coordinate_direction(d);
+        trace_closed(&self.holes[0], self.disk.as_ref(), self.frame.position, v)
+    }
+
+    /// What one disk hit's numbers are: radius, azimuth, g as the observer
+    /// sees it.
+    fn disk_numbers(&self, d: DVec3, position: DVec3, velocity: DVec3) -> (f64, f64, f64) {
+        let hole = &self.holes[0];
         let r = (position - hole.position).length();
-        let az = disk_azimuth(hole.position, normal, position);
-        let g = disk_redshift(r, hole.rs, photon_lambda(hole, normal, position, velocity))
-            * observer.g_factor(d);
-        (r, az, g)
-    };
-    // How far 1e-7 rad nudges move a ray's result: (direction, radius, g).
-    let sensitivity = |d: DVec3| {
-        let base = closed(d);
+        let az = disk_azimuth(hole.position, self.normal, position);
+        let lambda = photon_lambda(hole, self.normal, position, velocity);
+        (
+            r,
+            az,
+            disk_redshift(r, hole.rs, lambda) * self.observer.g_factor(d),
+        )
+    }
+
+    /// The four 1e-7 rad nudges of a pixel direction.
+    fn nudges(&self, d: DVec3, by: f64) -> [DVec3; 4] {
+        let (u, v) = (self.frame.right, self.frame.up);
+        [u, -u, v, -v].map(|n| (d + by * n).normalize())
+    }
+
+    /// How far 1e-7 rad nudges move a ray's result: (direction, radius, g).
+    fn sensitivity(&self, d: DVec3) -> (f64, f64, f64) {
+        if !self.closed_form {
+            return (0.0, 0.0, 0.0);
+        }
+        let base = self.closed(d);
         let mut worst = (0.0f64, 0.0f64, 0.0f64);
-        for n in [frame.right, -frame.right, frame.up, -frame.up] {
-            let dn = (d + 1e-7 * n).normalize();
-            match (base, closed(dn)) {
+        for dn in self.nudges(d, 1e-7) {
+            match (base, self.closed(dn)) {
                 (Outcome::Escaped { direction: a }, Outcome::Escaped { direction: b }) => {
                     worst.0 = worst.0.max(a.cross(b).length().atan2(a.dot(b)));
                 }
@@ -143,8 +163,8 @@ fn compare(name: &str, position: [f64; 3], extra: &str) -> Figures {
                         velocity: vb,
                     },
                 ) => {
-                    let (ra, _, ga) = disk_numbers(d, pa, va);
-                    let (rb, _, gb) = disk_numbers(dn, pb, vb);
+                    let (ra, _, ga) = self.disk_numbers(d, pa, va);
+                    let (rb, _, gb) = self.disk_numbers(dn, pb, vb);
                     worst.1 = worst.1.max((ra - rb).abs());
                     worst.2 = worst.2.max((ga - gb).abs());
                 }
@@ -152,8 +172,113 @@ fn compare(name: &str, position: [f64; 3], extra: &str) -> Figures {
             }
         }
         worst
-    };
+    }
 
+    /// A pixel whose GPU outcome differs from the integrator's `cpu`: allowed
+    /// only within 1e-3 rad of an edge (a nudged ray changes outcome);
+    /// counted as a stable mismatch where 1e-7 rad nudges leave the closed
+    /// form's outcome alone.
+    fn mismatch(
+        &self,
+        name: &str,
+        at: (u32, u32),
+        d: DVec3,
+        gpu_code: u32,
+        cpu: Outcome,
+        f: &mut Figures,
+    ) {
+        let near_edge = self
+            .nudges(d, 1e-3)
+            .iter()
+            .any(|&dn| outcome_code(&self.trace(dn)) != outcome_code(&cpu));
+        assert!(
+            near_edge,
+            "{name}: ray {at:?} GPU {gpu_code} vs CPU {cpu:?}, not near an edge"
+        );
+        f.edge += 1;
+        if self.closed_form {
+            let code = outcome_code(&self.closed(d));
+            if self
+                .nudges(d, 1e-7)
+                .iter()
+                .all(|&dn| outcome_code(&self.closed(dn)) == code)
+            {
+                println!(
+                    "{name}: ray {at:?} GPU {gpu_code} vs CPU {cpu:?}, stable under 1e-7 nudges"
+                );
+                f.stable_mismatches += 1;
+            }
+        }
+    }
+
+    /// A pixel whose outcome matches: its numbers against the tolerances
+    /// (well-conditioned rays into the percentiles, the others within four
+    /// times their own nudge sensitivity plus the tolerance).
+    fn numbers(
+        &self,
+        name: &str,
+        at: (u32, u32),
+        d: DVec3,
+        px: [f32; 4],
+        cpu: Outcome,
+        f: &mut Figures,
+    ) {
+        let kappa = self.sensitivity(d);
+        match cpu {
+            Outcome::Escaped { direction } => {
+                let g = DVec3::new(f64::from(px[0]), f64::from(px[1]), f64::from(px[2]));
+                let err = g.cross(direction).length().atan2(g.dot(direction));
+                if kappa.0 > DIR_TOL / 4.0 {
+                    f.ill_conditioned += 1;
+                    assert!(
+                        err <= 4.0 * kappa.0 + DIR_TOL,
+                        "{name}: ray {at:?} direction off by {err:e}, its 1e-7 nudge moves it {:e}",
+                        kappa.0
+                    );
+                } else {
+                    f.dir.push(err);
+                }
+            }
+            Outcome::Disk { position, velocity } => {
+                let (r, az, g) = self.disk_numbers(d, position, velocity);
+                let (er, eg) = ((f64::from(px[0]) - r).abs(), (f64::from(px[2]) - g).abs());
+                let daz = (f64::from(px[1]) - az).rem_euclid(std::f64::consts::TAU);
+                if kappa.1 > RADIUS_TOL / 4.0 || kappa.2 > G_TOL / 4.0 {
+                    f.ill_conditioned += 1;
+                    assert!(
+                        er <= 4.0 * kappa.1 + RADIUS_TOL && eg <= 4.0 * kappa.2 + G_TOL,
+                        "{name}: ray {at:?} radius off by {er:e}, g by {eg:e}; its 1e-7 nudge moves them {:e}, {:e}",
+                        kappa.1,
+                        kappa.2
+                    );
+                } else {
+                    f.radius.push(er);
+                    f.azimuth.push(daz.min(std::f64::consts::TAU - daz));
+                    f.g.push(eg);
+                }
+            }
+            Outcome::Captured { .. } | Outcome::NoSteps => {
+                assert_eq!(&px[..3], &[0.0, 0.0, 0.0]);
+            }
+        }
+    }
+}
+
+fn compare(name: &str, position: [f64; 3], extra: &str) -> Figures {
+    let vfov = if extra.contains("vfov_deg") {
+        ""
+    } else {
+        "vfov_deg = 60.0\n"
+    };
+    let (scene, gpu) = common::render_aov(
+        &format!(
+            "[camera]\nposition = [{}, {}, {}]\n{vfov}{extra}",
+            position[0], position[1], position[2]
+        ),
+        W,
+        H,
+    );
+    let reference = Reference::of(&scene);
     let mut f = Figures {
         rays: 0,
         edge: 0,
@@ -169,8 +294,11 @@ fn compare(name: &str, position: [f64; 3], extra: &str) -> Figures {
     for row in 0..H {
         for col in 0..W {
             f.rays += 1;
-            let d = frame.ray_dir(col, row, W, H).expect("a pinhole ray");
-            let cpu = cpu_trace(d);
+            let d = reference
+                .frame
+                .ray_dir(col, row, W, H)
+                .expect("a pinhole ray");
+            let cpu = reference.trace(d);
             let px = gpu.get_pixel(col, row).0;
             let gpu_code = px[3] as u32;
             assert!(
@@ -183,73 +311,9 @@ fn compare(name: &str, position: [f64; 3], extra: &str) -> Figures {
             );
             counts[gpu_code as usize] += 1;
             if gpu_code != outcome_code(&cpu) {
-                // Allowed only within 1e-3 rad of an edge: a nudged ray changes outcome.
-                let e = 1e-3;
-                let nudged = [frame.right, -frame.right, frame.up, -frame.up]
-                    .iter()
-                    .any(|&n| {
-                        outcome_code(&cpu_trace((d + e * n).normalize())) != outcome_code(&cpu)
-                    });
-                assert!(
-                    nudged,
-                    "{name}: ray ({col},{row}) GPU {gpu_code} vs CPU {cpu:?}, not near an edge"
-                );
-                f.edge += 1;
-                if holes.len() == 1 && scene.physics.gravity {
-                    let code = outcome_code(&closed(d));
-                    let stable = [frame.right, -frame.right, frame.up, -frame.up]
-                        .iter()
-                        .all(|&n| outcome_code(&closed((d + 1e-7 * n).normalize())) == code);
-                    if stable {
-                        println!(
-                            "{name}: ray ({col},{row}) GPU {gpu_code} vs CPU {cpu:?}, stable under 1e-7 nudges"
-                        );
-                        f.stable_mismatches += 1;
-                    }
-                }
-                continue;
-            }
-            let kappa = if holes.len() == 1 && scene.physics.gravity {
-                sensitivity(d)
+                reference.mismatch(name, (col, row), d, gpu_code, cpu, &mut f);
             } else {
-                (0.0, 0.0, 0.0)
-            };
-            match cpu {
-                Outcome::Escaped { direction } => {
-                    let g = DVec3::new(f64::from(px[0]), f64::from(px[1]), f64::from(px[2]));
-                    let err = g.cross(direction).length().atan2(g.dot(direction));
-                    if kappa.0 > DIR_TOL / 4.0 {
-                        f.ill_conditioned += 1;
-                        assert!(
-                            err <= 4.0 * kappa.0 + DIR_TOL,
-                            "{name}: ray ({col},{row}) direction off by {err:e}, its 1e-7 nudge moves it {:e}",
-                            kappa.0
-                        );
-                    } else {
-                        f.dir.push(err);
-                    }
-                }
-                Outcome::Disk { position, velocity } => {
-                    let (r, az, g) = disk_numbers(d, position, velocity);
-                    let (er, eg) = ((f64::from(px[0]) - r).abs(), (f64::from(px[2]) - g).abs());
-                    let daz = (f64::from(px[1]) - az).rem_euclid(std::f64::consts::TAU);
-                    if kappa.1 > RADIUS_TOL / 4.0 || kappa.2 > G_TOL / 4.0 {
-                        f.ill_conditioned += 1;
-                        assert!(
-                            er <= 4.0 * kappa.1 + RADIUS_TOL && eg <= 4.0 * kappa.2 + G_TOL,
-                            "{name}: ray ({col},{row}) radius off by {er:e}, g by {eg:e}; its 1e-7 nudge moves them {:e}, {:e}",
-                            kappa.1,
-                            kappa.2
-                        );
-                    } else {
-                        f.radius.push(er);
-                        f.azimuth.push(daz.min(std::f64::consts::TAU - daz));
-                        f.g.push(eg);
-                    }
-                }
-                Outcome::Captured { .. } | Outcome::NoSteps => {
-                    assert_eq!(&px[..3], &[0.0, 0.0, 0.0]);
-                }
+                reference.numbers(name, (col, row), d, px, cpu, &mut f);
             }
         }
     }
