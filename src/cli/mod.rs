@@ -59,7 +59,9 @@ pub fn load_scene(name: Option<&str>) -> Result<Scene, Error> {
 pub enum Command {
     /// Open the real-time window: drag to orbit, wheel to zoom, a panel with
     /// every parameter and the GPU time of each pass.
-    #[command(after_help = window_help())]
+    // (Every command reads a negative number as an option's value, refused
+    // by that option's own rule, not as an unknown flag.)
+    #[command(after_help = window_help(), allow_negative_numbers = true)]
     Window {
         #[command(flatten)]
         view: View,
@@ -78,7 +80,7 @@ pub enum Command {
         screenshot: Option<PathBuf>,
     },
     /// Render a still or a sequence offscreen to PNG (8-bit sRGB, tone-mapped), EXR (linear HDR) or video.
-    #[command(after_help = presets_help())]
+    #[command(after_help = presets_help(), allow_negative_numbers = true)]
     Render {
         #[command(flatten)]
         view: View,
@@ -119,6 +121,7 @@ pub enum Command {
     },
     /// Plot photon paths in the hole's equatorial plane (SVG), with the horizon,
     /// the photon sphere and the ISCO.
+    #[command(allow_negative_numbers = true)]
     Trace {
         /// Scene TOML file or preset (its first hole sets rs).
         #[arg(long)]
@@ -128,7 +131,7 @@ pub enum Command {
         out: PathBuf,
     },
     /// Render N frames and print GPU time per pass (median, p95, share of frame).
-    #[command(after_help = presets_help())]
+    #[command(after_help = presets_help(), allow_negative_numbers = true)]
     Profile {
         #[command(flatten)]
         view: View,

@@ -61,6 +61,43 @@ impl Output<'_> {
     }
 }
 
+/// Checks every output of a run ([`Output::check`]), and that no two name the
+/// same file: the second written would replace the first (`profile --json
+/// p.json --trace p.json` once left only the trace). `frames`: the numbered
+/// sequence of the first, if any.
+pub fn check_all(
+    outs: &[Output<'_>],
+    inputs: &[PathBuf],
+    frames: Option<&Range<u64>>,
+) -> Result<()> {
+    for (i, out) in outs.iter().enumerate() {
+        out.check(inputs, if i == 0 { frames } else { None })?;
+        if let Some(first) = outs[..i].iter().find(|o| same_place(o.path, out.path)) {
+            return Err(out.refuse(format!(
+                "is also {}'s file: two outputs of one run would overwrite each other; \
+                 give each its own name",
+                first.flag
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Whether two output paths name one file, existing or not (their folders
+/// resolved, through links).
+fn same_place(a: &Path, b: &Path) -> bool {
+    let place = |p: &Path| {
+        let dir = match p.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        dir.canonicalize()
+            .ok()
+            .zip(p.file_name().map(|n| n.to_owned()))
+    };
+    same_file(a, b) || matches!((place(a), place(b)), (Some(x), Some(y)) if x == y)
+}
+
 /// The folder the output goes to must exist and take a file (a probe file is
 /// made and removed).
 fn check_folder(out: &Output<'_>) -> Result<()> {

@@ -19,17 +19,18 @@ pub struct Options {
 /// `blackhole profile`: times the frames and prints (and optionally writes) the report.
 pub fn run_command(view: View, opts: Options) -> Result<ExitCode> {
     let scene = load_scene(view.scene.as_deref())?;
-    for (flag, path) in [("--json", &opts.json), ("--trace", &opts.trace)] {
-        if let Some(path) = path {
-            super::outputs::Output {
+    let outs: Vec<super::outputs::Output<'_>> = [("--json", &opts.json), ("--trace", &opts.trace)]
+        .into_iter()
+        .filter_map(|(flag, path)| {
+            path.as_deref().map(|path| super::outputs::Output {
                 flag,
                 path,
                 extensions: &["json"],
                 what: "JSON",
-            }
-            .check(&scene.input_files(), None)?;
-        }
-    }
+            })
+        })
+        .collect();
+    super::outputs::check_all(&outs, &scene.input_files(), None)?;
     let mut renderer = Renderer::new(RendererOptions::default())?;
     let (report, frames) = run_frames(
         &mut renderer,

@@ -66,13 +66,13 @@ pub(super) fn refuse(c: &Camera, at: &[Seg], refusal: Refusal) -> Check {
             name,
             "needs spin = 0: \"flat\" is the Schwarzschild comparison mapping",
         ),
-        Refusal::InsideSpinningHorizon { horizon } => fail(
+        Refusal::InsideSpinningHorizon { r, horizon } => fail(
             &key("observer"),
             name,
             format!(
-                "stands inside the spinning hole's horizon (r+ = {horizon:.4} rs), where only a \
-                 \"falling\" observer can be (nothing else stands still or orbits there): set \
-                 observer = \"falling\""
+                "stands inside the spinning hole's horizon (Boyer-Lindquist r = {r:.4} rs <= r+ = \
+                 {horizon:.4} rs), where only a \"falling\" observer can be (nothing else stands \
+                 still or orbits there): set observer = \"falling\""
             ),
         ),
         Refusal::FallingTooDeep { r, floor, inner } => fail(

@@ -213,6 +213,21 @@ impl Scene {
         Ok(())
     }
 
+    /// The disk's inner radius as a message quotes it: `"isco"` resolves to
+    /// a number the user never wrote, so that is said with it.
+    fn inner_radius_quoted(&self) -> String {
+        let (rs, spin) = self
+            .black_holes
+            .first()
+            .map_or((1.0, 0.0), |h| (h.rs, h.spin));
+        let isco = crate::spacetime::radii::isco(rs, spin.clamp(-1.0, 1.0));
+        if self.disk.inner_radius == isco {
+            format!("\"isco\", {isco:.4} rs, the ISCO at spin {spin}")
+        } else {
+            format!("{}", self.disk.inner_radius)
+        }
+    }
+
     fn validate_disk(&self) -> Check {
         let d = &self.disk;
         let key = |k| [Key("disk"), Key(k)];
@@ -224,7 +239,7 @@ impl Scene {
             d.outer_radius,
             format!(
                 "must be finite and greater than inner_radius ({})",
-                d.inner_radius
+                self.inner_radius_quoted()
             ),
         )?;
         non_negative(&key("brightness"), d.brightness)?;
@@ -260,7 +275,7 @@ impl Scene {
         rule(
             d.kind != DiskKind::Volumetric || (d.inner_radius > 0.0 && d.inner_radius >= photon),
             &key("inner_radius"),
-            d.inner_radius,
+            self.inner_radius_quoted(),
             format!(
                 "must be > 0 and outside the photon sphere (>= {bound}) for a volumetric \
                  disk, whose gas is sampled along paths that leave it"

@@ -92,7 +92,8 @@ impl SpinningHole {
         let half = 0.5 * self.hole.rs;
         match kerr::observer_velocity(kind, local, self.spin) {
             Ok(beta) => Ok(self.world(beta) / self.hole.rs),
-            Err(PlacementError::InsideHorizon) => Err(Refusal::InsideSpinningHorizon {
+            Err(PlacementError::InsideHorizon(r)) => Err(Refusal::InsideSpinningHorizon {
+                r: r * half,
                 horizon: self.horizon(),
             }),
             Err(PlacementError::TooDeep(r, floor)) => Err(Refusal::FallingTooDeep {

@@ -36,7 +36,8 @@ pub enum Refusal {
     FlatAroundSpin,
     /// Inside a spinning hole's outer horizon `horizon`, with an observer
     /// other than `"falling"`.
-    InsideSpinningHorizon { horizon: f64 },
+    /// (`r`: the camera's Boyer-Lindquist r, rs.)
+    InsideSpinningHorizon { r: f64, horizon: f64 },
     /// `"falling"` between a spinning hole's horizons at Boyer-Lindquist
     /// `r`, at or below `floor`: (1 + 1e-3) times the inner horizon `inner`
     /// or [`FALLING_MIN_R`] rs, whichever is farther out (rs units).

@@ -118,8 +118,9 @@ pub enum KerrObserver {
 /// Why an observer cannot stand where it was put.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PlacementError {
-    /// Inside the outer horizon, where only a falling observer can be.
-    InsideHorizon,
+    /// Inside the outer horizon (at Boyer-Lindquist r, M units), where only
+    /// a falling observer can be.
+    InsideHorizon(f64),
     /// A falling observer at Boyer-Lindquist r (the first value) at or
     /// below the second, the deepest it may go (`falling_floor`).
     TooDeep(f64, f64),
@@ -141,7 +142,7 @@ pub fn observer_velocity(kind: KerrObserver, p: DVec3, a: f64) -> Result<DVec3, 
         return match kind {
             KerrObserver::Falling if f.r > floor => Ok(DVec3::ZERO),
             KerrObserver::Falling => Err(PlacementError::TooDeep(f.r, floor)),
-            _ => Err(PlacementError::InsideHorizon),
+            _ => Err(PlacementError::InsideHorizon(f.r)),
         };
     }
     match kind {

@@ -243,7 +243,9 @@ pub fn trace(
     let beta = observer_velocity(observer, 2.0 * position, spin)?;
     if LocalFrame::at(2.0 * position, spin).r <= r_horizon(spin) {
         // A falling camera between the horizons: interior::trace_falling_inside.
-        return Err(PlacementError::InsideHorizon);
+        return Err(PlacementError::InsideHorizon(
+            LocalFrame::at(2.0 * position, spin).r,
+        ));
     }
     let (dz, doppler) = to_zamo_frame(d, beta);
     let mut ray = trace_zamo(position, dz, spin, disk);

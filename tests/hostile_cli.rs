@@ -1,0 +1,77 @@
+//! Hostile command lines, round 3 (issue of Step 15): each refused up front
+//! with one line naming the option and its rule, exit 2, before any GPU work.
+
+mod common;
+
+use common::{blackhole, refused_early, scratch};
+
+/// A negative number given to a numeric option is that option's value,
+/// refused by its own rule (once clap took `-0.5` for an unknown flag and
+/// answered "unexpected argument '-0' found").
+#[test]
+fn negative_numbers_reach_their_options_rule() {
+    let dir = scratch();
+    let out = dir.path().join("x.png");
+    let out = out.to_str().expect("a UTF-8 path");
+    for (args, option) in [
+        (
+            vec!["render", "--shutter", "-0.5", "--out", out],
+            "--shutter",
+        ),
+        (vec!["render", "--width", "-5", "--out", out], "--width"),
+        (vec!["render", "--spp", "-2", "--out", out], "--spp"),
+        (vec!["window", "--render-scale", "-1"], "--render-scale"),
+        (vec!["profile", "--frames", "-3"], "--frames"),
+    ] {
+        let mut c = blackhole();
+        c.args(&args);
+        let e = refused_early(c);
+        assert!(
+            e.contains(option) && e.contains("invalid value") && !e.contains("unexpected argument"),
+            "{args:?}: {e}"
+        );
+    }
+    assert!(!dir.path().join("x.png").exists());
+}
+
+/// Two outputs of one run naming one file (directly, or through another
+/// spelling of its folder) are refused before the GPU: once the trace
+/// silently replaced the figures.
+#[test]
+fn two_outputs_of_one_run_on_one_file_are_refused() {
+    let dir = scratch();
+    let json = dir.path().join("p.json");
+    let again = dir.path().join(".").join("p.json");
+    let mut c = blackhole();
+    c.args(["profile", "--frames", "1", "--json"])
+        .arg(&json)
+        .arg("--trace")
+        .arg(&again);
+    let e = refused_early(c);
+    assert!(e.contains("--trace") && e.contains("--json's file"), "{e}");
+    assert!(!json.exists());
+}
+
+/// `inner_radius = "isco"` resolves to a number the user never wrote: a
+/// message quoting it says it is the ISCO of that spin.
+#[test]
+fn an_isco_inner_radius_is_quoted_as_the_isco() {
+    let dir = scratch();
+    let scene = dir.path().join("s.toml");
+    std::fs::write(
+        &scene,
+        "[[black_hole]]\nspin = -0.998\n[disk]\nouter_radius = 4.0\n",
+    )
+    .expect("writing the scene");
+    let mut c = blackhole();
+    c.args(["render", "--scene"])
+        .arg(&scene)
+        .arg("--out")
+        .arg(dir.path().join("x.png"));
+    let e = refused_early(c);
+    assert!(
+        e.contains("disk.outer_radius = 4")
+            && e.contains("\"isco\", 4.4972 rs, the ISCO at spin -0.998"),
+        "{e}"
+    );
+}
