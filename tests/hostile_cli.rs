@@ -75,3 +75,31 @@ fn an_isco_inner_radius_is_quoted_as_the_isco() {
         "{e}"
     );
 }
+
+/// Frame rates no video holds (1e-6, 1e9) are refused with the range
+/// before any frame is rendered (once every frame rendered, then ffmpeg
+/// failed or wrote another rate than the one reported).
+#[test]
+fn frame_rates_no_video_holds_are_refused_up_front() {
+    let dir = scratch();
+    let scene = dir.path().join("s.toml");
+    for fps in ["1e-6", "1e9", "0.0"] {
+        std::fs::write(
+            &scene,
+            format!("[animation]\nfps = {fps}\ncamera = \"orbit\"\n"),
+        )
+        .expect("writing the scene");
+        let out = dir.path().join("v.mp4");
+        let mut c = blackhole();
+        c.args(["render", "--frames", "0..3", "--scene"])
+            .arg(&scene)
+            .arg("--out")
+            .arg(&out);
+        let e = refused_early(c);
+        assert!(
+            e.contains("animation.fps") && e.contains("from 0.01 to 1000"),
+            "{fps}: {e}"
+        );
+        assert!(!out.exists());
+    }
+}

@@ -28,6 +28,11 @@ pub const LIMIT: f64 = 1e9;
 
 pub use crate::spacetime::FALLING_MIN_R;
 
+/// The frame rates a scene may ask for (`[animation] fps`): MP4, WebM and
+/// MOV through ffmpeg hold these, and a frame's time stays a number.
+pub const MIN_FPS: f64 = 0.01;
+pub const MAX_FPS: f64 = 1000.0;
+
 /// Finite and at most [`LIMIT`] in size.
 trait InRange {
     fn in_range(&self) -> bool;
@@ -367,7 +372,13 @@ impl Scene {
     fn validate_animation(&self) -> Check {
         let a = &self.animation;
         let key = |k| [Key("animation"), Key(k)];
-        positive(&key("fps"), a.fps)?;
+        // (What the video containers hold, and each frame's time resolvable.)
+        rule(
+            (MIN_FPS..=MAX_FPS).contains(&a.fps),
+            &key("fps"),
+            a.fps,
+            format!("must be from {MIN_FPS} to {MAX_FPS} frames a second (what a video holds)"),
+        )?;
         rule(
             a.orbit_radius.in_range() && a.orbit_radius >= 0.0,
             &key("orbit_radius"),
