@@ -103,3 +103,26 @@ fn frame_rates_no_video_holds_are_refused_up_front() {
         assert!(!out.exists());
     }
 }
+
+/// Every number of a scene is checked whether or not the chosen mode reads
+/// it: `vfov_deg = nan` with the panorama (which ignores it) once passed.
+#[test]
+fn a_number_the_mode_ignores_is_checked_all_the_same() {
+    let dir = scratch();
+    let scene = dir.path().join("s.toml");
+    std::fs::write(
+        &scene,
+        "[camera]\nprojection = \"equirect\"\nvfov_deg = nan\n",
+    )
+    .expect("writing the scene");
+    let mut c = blackhole();
+    c.args(["render", "--scene"])
+        .arg(&scene)
+        .arg("--out")
+        .arg(dir.path().join("x.png"));
+    let e = refused_early(c);
+    assert!(
+        e.contains("camera.vfov_deg = NaN") || e.contains("camera.vfov_deg = nan"),
+        "{e}"
+    );
+}

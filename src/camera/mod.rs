@@ -66,6 +66,11 @@ impl Projection {
             Projection::Fisheye if !(vfov_deg > 0.0 && vfov_deg <= 360.0) => {
                 Err("must be in (0, 360] degrees for a fisheye (the field across its circle)")
             }
+            // Unread by the panorama, checked all the same: every number of
+            // a scene is one some mode could use (a NaN here once passed).
+            Projection::Equirect if !(vfov_deg > 0.0 && vfov_deg <= 360.0) => Err(
+                "must be in (0, 360] degrees (the panorama does not read it; every number is checked)",
+            ),
             _ => Ok(()),
         }
     }
