@@ -126,3 +126,29 @@ fn a_number_the_mode_ignores_is_checked_all_the_same() {
         "{e}"
     );
 }
+
+/// `trace` at a spin of 1e-16 draws the photon paths as at 1e-14 (once it
+/// drew none: the critical constant's spherical-orbit form is 0 / 0 there).
+#[test]
+fn a_vanishing_spin_still_traces_its_photon_paths() {
+    let dir = scratch();
+    let count = |spin: &str| {
+        let scene = dir.path().join("s.toml");
+        std::fs::write(&scene, format!("[[black_hole]]\nspin = {spin}\n")).expect("scene");
+        let out = dir.path().join(format!("t{spin}.svg"));
+        let mut c = blackhole();
+        c.args(["trace", "--scene"])
+            .arg(&scene)
+            .arg("--out")
+            .arg(&out);
+        let (code, _, stderr) = common::run(c);
+        assert_eq!(code, 0, "{stderr}");
+        let svg = std::fs::read_to_string(&out).expect("the SVG");
+        svg.matches("<polyline").count() + svg.matches("<path").count()
+    };
+    let (tiny, small) = (count("1e-16"), count("1e-14"));
+    assert!(
+        tiny > 100 && tiny.abs_diff(small) <= small / 20,
+        "{tiny} vs {small}"
+    );
+}

@@ -33,10 +33,19 @@ pub fn isco(rs: f64, spin: f64) -> f64 {
 }
 
 /// The equatorial photon constant lambda (in M) of the critical ray that
-/// winds onto the photon orbit on the `prograde` side, signed as the spin.
+/// winds onto the photon orbit on the `prograde` side, signed as the spin:
+/// -a + 6 cos(acos(-a) / 3) prograde, -a - 6 cos(acos(a) / 3) retrograde
+/// (a = |a*|), which tends to +-3 sqrt(3) as the spin vanishes (the
+/// spherical orbits' lambda(r) = -(r^3 - 3r^2 + a^2 r + a^2) / (a (r - 1))
+/// is 0 / 0 there: at a* = 1e-16 it gave no paths at all).
 pub fn critical_lambda(spin: f64, prograde: bool) -> f64 {
     let a = spin.abs();
-    kerr::critical_lambda_eta(kerr::r_photon_equatorial(a, prograde), a).0 * spin.signum()
+    let lambda = if prograde {
+        -a + 6.0 * ((-a).acos() / 3.0).cos()
+    } else {
+        -a - 6.0 * (a.acos() / 3.0).cos()
+    };
+    lambda * if spin < 0.0 { -1.0 } else { 1.0 }
 }
 
 /// The Page-Thorne flux's constants for the shader (x = sqrt(r / M)): the
