@@ -152,3 +152,30 @@ fn a_vanishing_spin_still_traces_its_photon_paths() {
         "{tiny} vs {small}"
     );
 }
+
+/// An `"orbiting"` camera on the disk's axis is refused at every spin (once
+/// refused at 0 and accepted at 1e-9): one rule, continuous in the spin.
+#[test]
+fn an_orbit_on_the_axis_is_refused_at_every_spin() {
+    let dir = scratch();
+    let scene = dir.path().join("s.toml");
+    for spin in ["0.0", "1e-9", "0.5", "-0.9"] {
+        std::fs::write(
+            &scene,
+            format!(
+                "[[black_hole]]\nspin = {spin}\n[camera]\nposition = [0.0, 10.0, 0.0]\nup = [0.0, 0.0, 1.0]\nobserver = \"orbiting\"\n"
+            ),
+        )
+        .expect("writing the scene");
+        let mut c = blackhole();
+        c.args(["render", "--scene"])
+            .arg(&scene)
+            .arg("--out")
+            .arg(dir.path().join("x.png"));
+        let e = refused_early(c);
+        assert!(
+            e.contains("camera.position") && e.contains("disk's axis"),
+            "{spin}: {e}"
+        );
+    }
+}

@@ -62,6 +62,12 @@ impl Spacetime {
             if kind == ObserverKind::Flat {
                 return Err(Refusal::FlatAroundSpin);
             }
+            // The axis rule holds for every spin, so that it is continuous
+            // at spin 0 (at 1e-9 an orbit on the axis once passed).
+            let rel = position - k.hole.position;
+            if kind == ObserverKind::Orbiting && on_axis(disk_normal, rel) {
+                return Err(Refusal::OnDiskAxis);
+            }
             return k.observer_velocity(kind, position).map(|_| ());
         }
         let mut nearest: Option<(DVec3, f64, f64)> = None;
@@ -91,8 +97,7 @@ impl Spacetime {
                         photon: 1.5 * rs,
                     });
                 }
-                let axis = disk_normal.normalize_or_zero();
-                if axis != DVec3::ZERO && axis.cross(rel / r).length() <= 1e-6 {
+                if on_axis(disk_normal, rel) {
                     return Err(Refusal::OnDiskAxis);
                 }
                 Ok(())
@@ -103,4 +108,11 @@ impl Spacetime {
             _ => Ok(()),
         }
     }
+}
+
+/// Whether `rel` (from the hole) lies on the disk's axis `normal`, where an
+/// orbit has no direction (within 1e-6 rad).
+fn on_axis(normal: DVec3, rel: DVec3) -> bool {
+    let (axis, r) = (normal.normalize_or_zero(), rel.length());
+    axis != DVec3::ZERO && r > 0.0 && axis.cross(rel / r).length() <= 1e-6
 }
