@@ -179,3 +179,35 @@ fn an_orbit_on_the_axis_is_refused_at_every_spin() {
         );
     }
 }
+
+/// `light_travel_time = true` where it cannot act (several holes, whose
+/// summed paths carry no clock; the volumetric gas) is refused naming the
+/// key, instead of silently doing nothing.
+#[test]
+fn light_travel_time_where_it_cannot_act_is_refused() {
+    let dir = scratch();
+    let scene = dir.path().join("s.toml");
+    for (toml, why) in [
+        (
+            "[[black_hole]]\nposition = [0.0, 0.0, 0.0]\n[[black_hole]]\nposition = [20.0, 0.0, 0.0]\n",
+            "one hole",
+        ),
+        ("[disk]\nkind = \"volumetric\"\n", "volumetric"),
+    ] {
+        std::fs::write(
+            &scene,
+            format!("{toml}[animation]\nlight_travel_time = true\n"),
+        )
+        .expect("writing the scene");
+        let mut c = blackhole();
+        c.args(["render", "--scene"])
+            .arg(&scene)
+            .arg("--out")
+            .arg(dir.path().join("x.png"));
+        let e = refused_early(c);
+        assert!(
+            e.contains("animation.light_travel_time = true") && e.contains(why),
+            "{e}"
+        );
+    }
+}

@@ -403,6 +403,20 @@ impl Scene {
             a.inclination_deg,
             "must be between -90 and 90 (the camera's up is +y)",
         )?;
+        // The disk as it was when its light left: timed along one hole's
+        // exact paths (or straight ones); summed paths carry no clock, and
+        // the volumetric gas is drawn at the frame's time.
+        let several = self.black_holes.len() > 1 && self.physics.gravity;
+        rule(
+            !a.light_travel_time || !(several || self.disk.kind == DiskKind::Volumetric),
+            &key("light_travel_time"),
+            a.light_travel_time,
+            if several {
+                "works with one hole (or gravity off): with several the summed light paths carry no clock"
+            } else {
+                "works with the thin disk: the volumetric gas is drawn as it is at the frame's time"
+            },
+        )?;
         positive(&key("fall_seconds"), a.fall_seconds)?;
         if let Some(end) = a.fall_end_radius {
             positive(&key("fall_end_radius"), end)?;

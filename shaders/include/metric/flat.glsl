@@ -46,6 +46,7 @@ Hit metric_trace(vec3 x, vec3 d) {
             hit.outcome = OUT_DISK;
             hit.pos = p;
             hit.g = disk_redshift(p, x, d);
+            hit.delay = t_d;  // (straight at c = 1: the distance)
             return hit;
         }
     } else if (DISK_KIND == DISK_VOLUME) {
