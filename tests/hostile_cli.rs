@@ -211,3 +211,30 @@ fn light_travel_time_where_it_cannot_act_is_refused() {
         );
     }
 }
+
+/// An ODS image's height must split into two equal eyes: odd heights and 1
+/// are refused before the GPU, naming --height.
+#[test]
+fn ods_heights_that_do_not_split_into_two_eyes_are_refused() {
+    let dir = scratch();
+    let scene = dir.path().join("s.toml");
+    std::fs::write(
+        &scene,
+        "[camera]\nprojection = \"equirect\"\nstereo = \"ods\"\nipd = 0.1\nposition = [0.0, 1.0, -15.0]\n",
+    )
+    .expect("writing the scene");
+    for h in ["1", "7"] {
+        let out = dir.path().join("x.png");
+        let mut c = blackhole();
+        c.args(["render", "--width", "16", "--height", h, "--scene"])
+            .arg(&scene)
+            .arg("--out")
+            .arg(&out);
+        let e = refused_early(c);
+        assert!(
+            e.contains(&format!("--height {h}")) && e.contains("two equal eyes"),
+            "{e}"
+        );
+        assert!(!out.exists());
+    }
+}

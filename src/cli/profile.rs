@@ -19,6 +19,7 @@ pub struct Options {
 /// `blackhole profile`: times the frames and prints (and optionally writes) the report.
 pub fn run_command(view: View, opts: Options) -> Result<ExitCode> {
     let scene = load_scene(view.scene.as_deref())?;
+    scene.check_image_size(view.width, view.height)?;
     let outs: Vec<super::outputs::Output<'_>> = [("--json", &opts.json), ("--trace", &opts.trace)]
         .into_iter()
         .filter_map(|(flag, path)| {

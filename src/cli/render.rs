@@ -95,6 +95,7 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
 
     // Check everything the user gave before touching the GPU.
     let mut scene = load_scene(scene.as_deref())?;
+    scene.check_image_size(width, height)?;
     if let Some(s) = shutter {
         scene.animation.shutter = s;
     }

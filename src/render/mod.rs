@@ -178,10 +178,13 @@ impl Renderer {
         // a float readback); refuse what cannot fit in the largest heap.
         let need = u64::from(width) * u64::from(height) * 64;
         let heap = self.gpu.largest_device_heap();
-        if heap > 0 && need > heap / 10 * 8 {
+        let ceiling = heap / 10 * 8;
+        if heap > 0 && need > ceiling {
             return Err(Error::Usage(format!(
-                "image size {width}x{height} needs about {:.1} GB of GPU memory; {} has {:.1} GB (its largest heap)",
+                "image size {width}x{height} needs about {:.1} GB of GPU memory (64 bytes a pixel), \
+                 over the {:.1} GB a frame may take on {}: 80 % of its largest heap, {:.1} GB",
                 need as f64 / 1e9,
+                ceiling as f64 / 1e9,
                 self.gpu.info.name,
                 heap as f64 / 1e9
             )));

@@ -32,6 +32,7 @@ impl Renderer {
         kind: OutputKind,
     ) -> Result<Frame> {
         self.check_size(width, height)?;
+        scene.check_image_size(width, height)?;
         if kind == OutputKind::Geodesic && scene.disk.kind == DiskKind::Volumetric {
             return Err(Error::Usage(
                 "--aov geodesic describes thin-disk hits; this scene's disk is volumetric".into(),

@@ -176,6 +176,19 @@ impl Scene {
         }
     }
 
+    /// Whether an offscreen image of `width` x `height` can hold this
+    /// scene's view: ODS stereo stacks two equal eyes, so its height is
+    /// even and at least 2 (an odd one once gave the eyes unequal halves).
+    pub fn check_image_size(&self, width: u32, height: u32) -> Result<()> {
+        if self.camera.stereo == super::Stereo::Ods && (height < 2 || height % 2 == 1) {
+            return Err(Error::Usage(format!(
+                "--height {height}: camera.stereo = \"ods\" stacks two equal eyes (the left \
+                 on top), so the height must be even and at least 2 ({width}x{height} asked)"
+            )));
+        }
+        Ok(())
+    }
+
     /// Checks every value as a scene file's would be (for scenes edited in the
     /// window's panel): `key = value: why` on failure.
     pub fn check(&self) -> Result<()> {
