@@ -238,3 +238,36 @@ fn ods_heights_that_do_not_split_into_two_eyes_are_refused() {
         assert!(!out.exists());
     }
 }
+
+/// Every instant a frame samples (the shutter open, --spp samples) obeys
+/// the camera's rules, named by frame, sample and time: a static camera
+/// whose later samples stood inside the ergoregion once rendered them as
+/// another observer. A still samples frame 0's interval the same way.
+#[test]
+fn every_instant_a_frame_samples_obeys_the_camera_rules() {
+    let dir = scratch();
+    let scene = dir.path().join("s.toml");
+    std::fs::write(
+        &scene,
+        "[[black_hole]]\nspin = 0.9\n[camera]\nposition = [0.0, 0.0, -3.0]\nobserver = \"static\"\n[animation]\ncamera = \"fall\"\nfall_seconds = 1.0\nfps = 1.0\nshutter = 1.0\n",
+    )
+    .expect("writing the scene");
+    for frames in [&["--frames", "0..1"][..], &[][..]] {
+        let out = dir.path().join("x.png");
+        let mut c = blackhole();
+        c.args([
+            "render", "--spp", "16", "--width", "32", "--height", "18", "--scene",
+        ])
+        .arg(&scene)
+        .args(frames)
+        .arg("--out")
+        .arg(&out);
+        let e = refused_early(c);
+        assert!(
+            e.contains("frame 0 (t = 0.9575 s: sample 15 of 16, shutter 1)")
+                && e.contains("ergoregion"),
+            "{e}"
+        );
+        assert!(std::fs::read_dir(dir.path()).expect("listing").count() == 1);
+    }
+}

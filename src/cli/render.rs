@@ -130,7 +130,7 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
             )));
         }
         container.check(width, height)?;
-        scene.check_frames(&range)?;
+        scene.check_frames(&range, spp)?;
         catch_signals(&out);
         let job = Job {
             scene: &scene,
@@ -160,9 +160,8 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
             "--aov geodesic needs a thin disk (or none); this scene's disk is volumetric".into(),
         ));
     }
-    if let Some(range) = &frames {
-        scene.check_frames(range)?;
-    }
+    // (A still with the shutter open samples frame 0's interval.)
+    scene.check_frames(frames.as_ref().unwrap_or(&(0..1)), spp)?;
     let kind = match aov {
         Aov::Beauty if exr_post => crate::OutputKind::HdrPost,
         Aov::Beauty => format.output_kind(),

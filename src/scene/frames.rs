@@ -57,10 +57,14 @@ impl Scene {
         )
     }
 
-    /// Checks the camera of every frame in `range` (those after the camera
-    /// stops moving are the same and checked once); the first bad frame is
-    /// named. Refuses a range longer than [`MAX_SEQUENCE_FRAMES`].
-    pub fn check_frames(&self, range: &Range<u64>) -> Result<()> {
+    /// Checks the camera of every frame in `range` and, with the shutter
+    /// open, of every instant its `spp` samples take ([`Scene::at_sample`]:
+    /// once a static camera's later samples stood inside the ergoregion and
+    /// silently became another observer); those after the camera stops
+    /// moving are the same and checked once. The first bad frame is named
+    /// with the instant's time. Refuses a range longer than
+    /// [`MAX_SEQUENCE_FRAMES`].
+    pub fn check_frames(&self, range: &Range<u64>, spp: u32) -> Result<()> {
         let count = range.end.saturating_sub(range.start);
         if count > MAX_SEQUENCE_FRAMES {
             return Err(Error::Usage(format!(
@@ -87,17 +91,25 @@ impl Scene {
             .as_ref()
             .map_or_else(|| "the scene".to_string(), |p| p.display().to_string());
         let spacetime = crate::spacetime::Spacetime::of(self);
+        let samples = if a.shutter > 0.0 { spp.max(1) } else { 1 };
         for i in range.start..end {
-            let camera = self.camera_at_frame(i);
-            if let Err((path, value, why)) =
-                self.check_camera_in(&spacetime, &camera, &[Key("camera")])
-            {
-                return Err(Error::Scene(format!(
-                    "{origin}: frame {i} (t = {:.4} s) of the animation (camera = \"{}\"): {} = {value}: {why}",
-                    a.time_of(i),
-                    a.camera.name(),
-                    display_path(&path)
-                )));
+            for s in 0..samples {
+                let at = self.at_sample(i, s, samples);
+                if let Err((path, value, why)) =
+                    self.check_camera_in(&spacetime, &at.camera, &[Key("camera")])
+                {
+                    let which = if samples > 1 {
+                        format!(": sample {s} of {samples}, shutter {}", a.shutter)
+                    } else {
+                        String::new()
+                    };
+                    return Err(Error::Scene(format!(
+                        "{origin}: frame {i} (t = {:.4} s{which}) of the animation (camera = \"{}\"): {} = {value}: {why}",
+                        at.time,
+                        a.camera.name(),
+                        display_path(&path)
+                    )));
+                }
             }
         }
         Ok(())
@@ -120,20 +132,20 @@ mod tests {
              [[black_hole]]\nrs = 1.0\n[[black_hole]]\nposition = [0.0, 0.0, -10.0]\nrs = 1.0\n\
              [animation]\ncamera = \"fall\"\nfall_seconds = 10.0\nfps = 10.0\n",
         );
-        let e = s.check_frames(&(0..100)).unwrap_err().to_string();
+        let e = s.check_frames(&(0..100), 1).unwrap_err().to_string();
         assert!(e.contains("frame ") && e.contains("black_hole[1]"), "{e}");
         // Frames before the hole are fine.
-        assert!(s.check_frames(&(0..10)).is_ok());
+        assert!(s.check_frames(&(0..10), 1).is_ok());
     }
 
     #[test]
     fn absurd_ranges_are_refused_and_long_still_ones_are_cheap() {
         let s = scene("[animation]\ncamera = \"fall\"\n");
-        let e = s.check_frames(&(0..u64::MAX)).unwrap_err().to_string();
+        let e = s.check_frames(&(0..u64::MAX), 1).unwrap_err().to_string();
         assert!(e.contains("at most 10000000"), "{e}");
         // A fall stops moving at fall_seconds: only those frames are checked.
         let t = std::time::Instant::now();
-        s.check_frames(&(0..MAX_SEQUENCE_FRAMES))
+        s.check_frames(&(0..MAX_SEQUENCE_FRAMES), 1)
             .expect("the default fall is fine");
         assert!(t.elapsed().as_secs_f64() < 5.0);
     }
