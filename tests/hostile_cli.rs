@@ -271,3 +271,38 @@ fn every_instant_a_frame_samples_obeys_the_camera_rules() {
         assert!(std::fs::read_dir(dir.path()).expect("listing").count() == 1);
     }
 }
+
+/// Each ODS eye is the observer's own place and obeys its rules: an eye
+/// inside the ergoregion of a static camera, or inside the photon sphere
+/// of an orbiting one, is refused naming ipd (both once rendered).
+#[test]
+fn ods_eyes_obey_the_observers_rules() {
+    let dir = scratch();
+    let scene = dir.path().join("s.toml");
+    for (toml, why) in [
+        (
+            "[[black_hole]]\nspin = 0.9\n[camera]\nposition = [0.0, 0.0, -1.12]\nlook_at = [5.0, 0.0, -1.12]\nobserver = \"static\"\n",
+            "ergoregion",
+        ),
+        (
+            "[camera]\nposition = [0.0, 0.3, -1.51]\nlook_at = [5.0, 0.3, -1.51]\nobserver = \"orbiting\"\n",
+            "photon sphere",
+        ),
+    ] {
+        std::fs::write(
+            &scene,
+            format!("{toml}projection = \"equirect\"\nstereo = \"ods\"\nipd = 0.1\n"),
+        )
+        .expect("writing the scene");
+        let mut c = blackhole();
+        c.args(["render", "--width", "32", "--height", "16", "--scene"])
+            .arg(&scene)
+            .arg("--out")
+            .arg(dir.path().join("x.png"));
+        let e = refused_early(c);
+        assert!(
+            e.contains("camera.ipd = 0.1: puts an eye at") && e.contains(why),
+            "{e}"
+        );
+    }
+}

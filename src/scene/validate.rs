@@ -197,7 +197,10 @@ impl Scene {
     /// Each ODS eye sits ipd / 2 from the camera: both outside every hole,
     /// with room to spare (an eye at the horizon sees nothing), or, for a
     /// falling camera of one non-rotating hole, both outside the
-    /// singularity's neighbourhood as the camera is.
+    /// singularity's neighbourhood as the camera is; and every place on the
+    /// eyes' viewing circle obeys the observer's own rules (an eye inside
+    /// the ergoregion of a static camera, or inside the photon sphere of an
+    /// orbiting one, once rendered).
     fn check_eyes(&self, spacetime: &Spacetime, c: &Camera, cam: DVec3) -> Check {
         if c.stereo != Stereo::Ods || !self.physics.gravity {
             return Ok(());
@@ -211,6 +214,22 @@ impl Scene {
                 let why = format!(
                     "puts an eye within {least} rs of black_hole[{i}] (the camera is {r:.4} from \
                      it; each eye sits ipd / 2 from the camera)"
+                );
+                return fail(&[Key("camera"), Key("ipd")], c.ipd, why);
+            }
+        }
+        let f = c.frame();
+        let normal = DVec3::from(self.disk.normal);
+        for k in 0..64 {
+            let t = std::f64::consts::TAU * f64::from(k) / 64.0;
+            let eye = cam + 0.5 * c.ipd * (t.cos() * f.right - t.sin() * f.forward);
+            if let Err(refusal) = spacetime.placement(c.observer, eye, normal)
+                && let Err((_, _, why)) = refuse(c, &[Key("camera")], refusal)
+            {
+                let why = format!(
+                    "puts an eye at [{:.4}, {:.4}, {:.4}], which {why} (each eye is the \
+                     observer's own place)",
+                    eye.x, eye.y, eye.z
                 );
                 return fail(&[Key("camera"), Key("ipd")], c.ipd, why);
             }

@@ -150,7 +150,10 @@ impl Spacetime {
         };
         let r = k.radius_of(DVec3::from(scene.camera.position));
         let band = (1.0 + crate::physics::kerr::FALLING_FRAME_BAND) * k.r_plus_m();
-        (scene.camera.observer == ObserverKind::Falling && r < band).then_some(r)
+        // (ODS eyes each stand at their own r: outside r+ they keep the
+        // exterior's frames; inside, validation refuses them.)
+        let ods = scene.camera.stereo == crate::scene::Stereo::Ods && r > k.r_plus_m();
+        (scene.camera.observer == ObserverKind::Falling && r < band && !ods).then_some(r)
     }
 
     /// The observer holding the scene's camera (`[camera] observer` at its
