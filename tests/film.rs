@@ -234,3 +234,33 @@ fn a_dome_frame_goes_to_video_black_outside_its_circle() {
     let brightest = raw.stdout.iter().copied().max().unwrap_or(0);
     assert!(brightest > 60, "nothing bright in the dome: {brightest}");
 }
+
+/// Output paths reach ffmpeg literally, never as URLs: a folder named
+/// `10:30` (once "Protocol not found" after every frame) and one named
+/// `file:x` (once written elsewhere) each get their video, and nothing else
+/// is left beside it.
+#[test]
+fn video_paths_that_look_like_urls_are_written_where_they_say() {
+    let dir = scratch();
+    for folder in ["10:30", "file:x"] {
+        let sub = dir.path().join(folder);
+        std::fs::create_dir(&sub).expect("a folder");
+        let out = sub.join("v.mp4");
+        let mut c = blackhole();
+        c.args([
+            "render", "--width", "64", "--height", "36", "--frames", "0..3",
+        ])
+        .args(["--scene", "doppler", "--out"])
+        .arg(&out);
+        let (code, stdout, stderr) = run(c);
+        assert_clean(code, &stdout, &stderr);
+        assert!(out.is_file(), "{folder}: no video");
+        assert_eq!(
+            std::fs::read_dir(&sub).expect("lists").count(),
+            1,
+            "{folder}"
+        );
+    }
+    // Nothing written beside the folders (file:x's ffmpeg once wrote to x/).
+    assert_eq!(std::fs::read_dir(dir.path()).expect("lists").count(), 2);
+}

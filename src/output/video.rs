@@ -151,6 +151,18 @@ impl VideoWriter {
         fps: f64,
     ) -> Result<Self> {
         let tmp = super::temp_path(target);
+        // ffmpeg reads `word:rest` as a URL (a folder named `10:30` gave
+        // "Protocol not found"; `file:x/v.mp4` wrote elsewhere): the
+        // temporary goes to it as `file:` and an absolute path, literally.
+        let literal = {
+            let abs = std::path::absolute(&tmp).map_err(|source| Error::Io {
+                path: tmp.clone(),
+                source,
+            })?;
+            let mut s = std::ffi::OsString::from("file:");
+            s.push(abs.as_os_str());
+            s
+        };
         let size = format!("{width}x{height}");
         let rate = format!("{fps}");
         let mut cmd = Command::new("ffmpeg");
@@ -162,7 +174,7 @@ impl VideoWriter {
             .args(["-color_trc", "bt709"])
             .args(["-c:v", container.encoder().0])
             .args(container.args())
-            .arg(&tmp)
+            .arg(&literal)
             .stdin(Stdio::piped())
             .stdout(Stdio::null())
             .stderr(Stdio::piped());
