@@ -264,3 +264,39 @@ fn video_paths_that_look_like_urls_are_written_where_they_say() {
     // Nothing written beside the folders (file:x's ffmpeg once wrote to x/).
     assert_eq!(std::fs::read_dir(dir.path()).expect("lists").count(), 2);
 }
+
+/// A disk that fills while ffmpeg encodes (here a file-size limit, whose
+/// writes then fail as on a full disk): ffmpeg may still exit 0 over a
+/// video without its index (MP4) or cut short (WebM); the run reads the
+/// video back, fails (exit 1) and leaves nothing under the final name.
+#[test]
+fn a_disk_full_while_encoding_fails_the_run_and_leaves_no_file() {
+    let dir = scratch();
+    for ext in ["mp4", "webm"] {
+        let out = dir.path().join(format!("v.{ext}"));
+        let mut c = Command::new("bash");
+        c.arg("-c")
+            .arg(format!(
+                "ulimit -f 8; trap '' XFSZ; exec \"{}\" render --scene doppler --width 320 --height 180 --frames 0..60 --out \"{}\"",
+                env!("CARGO_BIN_EXE_blackhole"),
+                out.display()
+            ));
+        // (The renderer's environment for tests: validation on, the cache.)
+        for (k, v) in blackhole().get_envs() {
+            if let Some(v) = v {
+                c.env(k, v);
+            }
+        }
+        let (code, _, stderr) = run(c);
+        assert_eq!(code, 1, "{ext}: {stderr}");
+        assert!(
+            stderr.contains("incomplete video") && stderr.contains("not written"),
+            "{stderr}"
+        );
+        let left: Vec<_> = std::fs::read_dir(dir.path())
+            .expect("lists")
+            .map(|e| e.expect("entry").file_name())
+            .collect();
+        assert!(left.is_empty(), "{ext}: left {left:?}");
+    }
+}

@@ -154,15 +154,7 @@ impl VideoWriter {
         // ffmpeg reads `word:rest` as a URL (a folder named `10:30` gave
         // "Protocol not found"; `file:x/v.mp4` wrote elsewhere): the
         // temporary goes to it as `file:` and an absolute path, literally.
-        let literal = {
-            let abs = std::path::absolute(&tmp).map_err(|source| Error::Io {
-                path: tmp.clone(),
-                source,
-            })?;
-            let mut s = std::ffi::OsString::from("file:");
-            s.push(abs.as_os_str());
-            s
-        };
+        let literal = literal_url(&tmp)?;
         let size = format!("{width}x{height}");
         let rate = format!("{fps}");
         let mut cmd = Command::new("ffmpeg");
@@ -265,6 +257,22 @@ impl VideoWriter {
         std::fs::File::open(&self.tmp)
             .and_then(|f| f.sync_all())
             .map_err(io)?;
+        // ffmpeg can exit 0 over a file it could not finish (a full disk:
+        // an MP4 without its index, a WebM cut short): the video is read
+        // back, and only one holding every frame takes the final name.
+        let readable = readable_frames(&self.tmp)?;
+        if readable != Some(self.frames) {
+            let _ = std::fs::remove_file(&self.tmp);
+            super::set_current_temp(None);
+            let held = readable.map_or_else(
+                || format!("unreadable after {} frames", self.frames),
+                |n| format!("{n} of {} frames readable", self.frames),
+            );
+            return Err(Error::Other(format!(
+                "ffmpeg left an incomplete video ({held}; is the disk full?): {} not written",
+                self.target.display()
+            )));
+        }
         std::fs::rename(&self.tmp, &self.target).map_err(io)?;
         super::set_current_temp(None);
         Ok(self.frames)
@@ -300,6 +308,40 @@ impl Drop for VideoWriter {
             super::set_current_temp(None);
         }
     }
+}
+
+/// `path` as ffmpeg must be given it: `file:` and the absolute path,
+/// literally (a bare `word:rest` is read as a URL: a folder named `10:30`
+/// gave "Protocol not found"; `file:x/v.mp4` wrote elsewhere).
+fn literal_url(path: &Path) -> Result<std::ffi::OsString> {
+    let abs = std::path::absolute(path).map_err(|source| Error::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let mut s = std::ffi::OsString::from("file:");
+    s.push(abs.as_os_str());
+    Ok(s)
+}
+
+/// How many video frames ffprobe reads back from `path` (its packets: no
+/// decoding); None where it cannot read the file at all.
+fn readable_frames(path: &Path) -> Result<Option<u64>> {
+    let out = Command::new("ffprobe")
+        .args(["-v", "error", "-select_streams", "v:0", "-count_packets"])
+        .args(["-show_entries", "stream=nb_read_packets", "-of", "csv=p=0"])
+        .arg(literal_url(path)?)
+        .stdin(Stdio::null())
+        .output()
+        .map_err(|source| Error::Io {
+            path: PathBuf::from("ffprobe"),
+            source,
+        })?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    Ok(out
+        .status
+        .success()
+        .then(|| text.trim().parse().ok())
+        .flatten())
 }
 
 fn last_line(s: &str) -> String {
