@@ -300,3 +300,71 @@ fn a_disk_full_while_encoding_fails_the_run_and_leaves_no_file() {
         assert!(left.is_empty(), "{ext}: left {left:?}");
     }
 }
+
+/// Killed outright (SIGKILL), the renderer takes ffmpeg with it (once the
+/// encoder went on finishing a hidden temporary); the next run of the same
+/// output removes what the dead run left, and a live run's temporary is
+/// never touched.
+#[test]
+fn a_killed_video_run_takes_its_encoder_and_the_next_run_cleans_up() {
+    let dir = scratch();
+    let out = path_in(&dir, "film.mp4");
+    let mut c = blackhole();
+    c.args([
+        "render",
+        "--width",
+        "320",
+        "--height",
+        "180",
+        "--frames",
+        "0..100000",
+    ])
+    .arg("--out")
+    .arg(&out)
+    .stdout(Stdio::null())
+    .stderr(Stdio::null());
+    let mut child = c.spawn().expect("starts");
+    let temps = || -> Vec<std::path::PathBuf> {
+        std::fs::read_dir(dir.path())
+            .expect("lists")
+            .filter_map(|e| e.ok())
+            .map(|e| e.path())
+            .filter(|p| p.to_string_lossy().ends_with(".tmp"))
+            .collect()
+    };
+    let t0 = std::time::Instant::now();
+    while temps().is_empty() {
+        assert!(
+            t0.elapsed().as_secs() < 120,
+            "no temporary after two minutes"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    std::thread::sleep(std::time::Duration::from_millis(500));
+    child.kill().expect("SIGKILL");
+    child.wait().expect("waits");
+    // The encoder went with it: the temporary stops growing at once.
+    std::thread::sleep(std::time::Duration::from_millis(500));
+    let left = temps();
+    assert_eq!(left.len(), 1, "{left:?}");
+    let size = |p: &std::path::Path| std::fs::metadata(p).map(|m| m.len()).unwrap_or(0);
+    let before = size(&left[0]);
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    assert_eq!(size(&left[0]), before, "ffmpeg outlived the renderer");
+    // A live run's temporary of the same name pattern is not touched.
+    let live = dir
+        .path()
+        .join(format!(".film.mp4.{}.tmp", std::process::id()));
+    std::fs::write(&live, b"a live run's").expect("writes");
+    let mut c = blackhole();
+    c.args([
+        "render", "--width", "64", "--height", "36", "--frames", "0..2",
+    ])
+    .arg("--out")
+    .arg(&out);
+    let (code, stdout, stderr) = run(c);
+    assert_clean(code, &stdout, &stderr);
+    assert!(out.is_file());
+    assert!(!left[0].exists(), "the dead run's temporary is still there");
+    assert!(live.exists(), "a live run's temporary was removed");
+}

@@ -306,3 +306,29 @@ fn ods_eyes_obey_the_observers_rules() {
         );
     }
 }
+
+/// `--resume` removes only the temporaries whose writer is gone: one of a
+/// run still alive (here this test's own pid: stopped or slow, it would
+/// have failed when its file vanished) is left alone.
+#[test]
+fn resume_leaves_a_live_runs_temporary_alone() {
+    let dir = scratch();
+    let out = dir.path().join("f.png");
+    let live = dir
+        .path()
+        .join(format!(".f_0001.png.{}.tmp", std::process::id()));
+    let dead = dir.path().join(".f_0002.png.999999.tmp");
+    std::fs::write(&live, b"half").expect("writes");
+    std::fs::write(&dead, b"half").expect("writes");
+    let mut c = blackhole();
+    c.args([
+        "render", "--width", "32", "--height", "18", "--frames", "0..3", "--resume",
+    ])
+    .arg("--out")
+    .arg(&out);
+    let (code, stdout, stderr) = common::run(c);
+    common::assert_clean(code, &stdout, &stderr);
+    assert!(live.exists(), "a live run's temporary was removed");
+    assert!(!dead.exists(), "a dead run's temporary is still there");
+    assert!(stderr.contains("removed 1 temporary"), "{stderr}");
+}

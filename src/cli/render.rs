@@ -210,6 +210,8 @@ struct Job<'a> {
 impl Job<'_> {
     fn still(&self) -> Result<ExitCode, Error> {
         let (width, height) = (self.width, self.height);
+        // A dead run's temporaries of this image go first.
+        output::remove_stale_temps(self.out);
         let mut renderer = Renderer::new(RendererOptions::default())?;
         let start = Instant::now();
         // A still is frame 0; with the shutter open its samples spread over
@@ -348,7 +350,7 @@ impl Job<'_> {
             {
                 let ours =
                     outputs::frame_index(self.out, target).is_some_and(|i| range.contains(&i));
-                if ours && output::is_temp_of(&name, target) {
+                if ours && output::is_stale_temp_of(&name, target) {
                     stale += usize::from(std::fs::remove_file(entry.path()).is_ok());
                 }
                 continue;

@@ -165,11 +165,60 @@ pub fn remove_current_temp() {
 /// Whether `name` is a temporary file of this module's for the file `target`
 /// (`.target.<pid>.tmp`), left by a process that was killed mid-write.
 pub fn is_temp_of(name: &str, target: &str) -> bool {
+    temp_writer(name, target).is_some()
+}
+
+/// The pid of the run writing the temporary `name` of `target`.
+fn temp_writer(name: &str, target: &str) -> Option<u32> {
     name.strip_prefix('.')
         .and_then(|n| n.strip_prefix(target))
         .and_then(|n| n.strip_prefix('.'))
         .and_then(|n| n.strip_suffix(".tmp"))
-        .is_some_and(|pid| !pid.is_empty() && pid.bytes().all(|b| b.is_ascii_digit()))
+        .filter(|pid| !pid.is_empty() && pid.bytes().all(|b| b.is_ascii_digit()))
+        .and_then(|pid| pid.parse().ok())
+}
+
+/// Whether `name` is a temporary of `target` left by a run that is gone:
+/// its writer's pid no longer runs (a live run's, stopped or slow, is its
+/// own: `--resume` once deleted one, which then failed).
+pub fn is_stale_temp_of(name: &str, target: &str) -> bool {
+    temp_writer(name, target).is_some_and(|pid| pid != std::process::id() && !running(pid))
+}
+
+#[cfg(unix)]
+fn running(pid: u32) -> bool {
+    let Ok(pid) = libc::pid_t::try_from(pid) else {
+        return false;
+    };
+    // SAFETY: kill with signal 0 sends nothing; it only asks whether the
+    // process exists (EPERM: it does, under another user).
+    let alive = unsafe { libc::kill(pid, 0) } == 0;
+    alive || std::io::Error::last_os_error().raw_os_error() == Some(libc::EPERM)
+}
+
+#[cfg(not(unix))]
+fn running(_pid: u32) -> bool {
+    true
+}
+
+/// Removes the temporaries a dead run left of `out` (a still or a video:
+/// its own name) in one listing of its folder; returns how many.
+pub fn remove_stale_temps(out: &Path) -> usize {
+    let Some(target) = out.file_name().map(|n| n.to_string_lossy().into_owned()) else {
+        return 0;
+    };
+    let dir = match out.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return 0;
+    };
+    entries
+        .flatten()
+        .filter(|e| is_stale_temp_of(&e.file_name().to_string_lossy(), &target))
+        .filter(|e| std::fs::remove_file(e.path()).is_ok())
+        .count()
 }
 
 /// Writes `path` through `write(tmp)`, flushes the file to the disk and

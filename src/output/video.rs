@@ -150,6 +150,8 @@ impl VideoWriter {
         (width, height): (u32, u32),
         fps: f64,
     ) -> Result<Self> {
+        // A dead run's temporaries of this video go first.
+        super::remove_stale_temps(target);
         let tmp = super::temp_path(target);
         // ffmpeg reads `word:rest` as a URL (a folder named `10:30` gave
         // "Protocol not found"; `file:x/v.mp4` wrote elsewhere): the
@@ -175,6 +177,26 @@ impl VideoWriter {
         // ffmpeg behind its back.
         #[cfg(unix)]
         std::os::unix::process::CommandExt::process_group(&mut cmd, 0);
+        // And it dies with the renderer: killed (SIGKILL), the renderer
+        // once left ffmpeg finishing a hidden temporary on its own.
+        #[cfg(target_os = "linux")]
+        {
+            let parent = std::process::id();
+            // SAFETY: between fork and exec only async-signal-safe calls:
+            // prctl, getppid and _exit.
+            unsafe {
+                std::os::unix::process::CommandExt::pre_exec(&mut cmd, move || {
+                    if libc::prctl(libc::PR_SET_PDEATHSIG, libc::SIGKILL) != 0 {
+                        return Err(std::io::Error::last_os_error());
+                    }
+                    // (The renderer already gone before the call above.)
+                    if u32::try_from(libc::getppid()) != Ok(parent) {
+                        libc::_exit(1);
+                    }
+                    Ok(())
+                });
+            }
+        }
         let mut child = cmd.spawn().map_err(|e| Error::Io {
             path: PathBuf::from("ffmpeg"),
             source: e,
