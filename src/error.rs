@@ -69,6 +69,10 @@ pub enum Error {
     /// Anything else that is a bug or an unexpected driver answer, with context.
     #[error("{0}")]
     Other(String),
+
+    /// Stopped between samples by the caller's flag ([`crate::Renderer::stop_when`]).
+    #[error("stopped")]
+    Interrupted,
 }
 
 impl Error {

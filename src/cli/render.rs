@@ -216,17 +216,23 @@ impl Job<'_> {
         let start = Instant::now();
         // A still is frame 0; with the shutter open its samples spread over
         // frame 0's interval (closed, the scene exactly as written).
-        let frame = if self.scene.animation.shutter > 0.0 {
+        // A signal stops it between samples (within one sample's time).
+        renderer.stop_when(&STOP);
+        let rendered = if self.scene.animation.shutter > 0.0 {
             let at = |s| self.scene.at_sample(0, s, self.spp);
-            renderer.render_samples_with(&at, width, height, self.kind, self.spp)?
+            renderer.render_samples_with(&at, width, height, self.kind, self.spp)
         } else {
-            renderer.render_samples(self.scene, width, height, self.kind, self.spp)?
+            renderer.render_samples(self.scene, width, height, self.kind, self.spp)
         };
-        if stopped() {
+        let frame = match rendered {
+            Err(Error::Interrupted) => None,
+            other => Some(other?),
+        };
+        let Some(frame) = frame.filter(|_| !stopped()) else {
             eprintln!("{}", interrupted_summary(self.out));
             finish(renderer)?;
             return Ok(ExitCode::from(INTERRUPTED));
-        }
+        };
         output::write_frame(&frame, self.out, self.format)?;
         log::info!("GPU: {}", frame.timings);
         println!(

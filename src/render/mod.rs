@@ -47,9 +47,20 @@ pub struct Renderer {
     resources: SceneResources,
     pipelines: Pipelines,
     gpu: Arc<Gpu>,
+    /// Raised (by a signal handler) to stop a many-sample image between its
+    /// samples ([`Renderer::stop_when`]).
+    stop: Option<&'static std::sync::atomic::AtomicBool>,
 }
 
 impl Renderer {
+    /// Stops a many-sample render between samples once `flag` is raised:
+    /// [`Renderer::render_samples_with`] then returns [`crate::Error::Interrupted`]
+    /// (a still at --spp 1024 once finished every sample, ten seconds,
+    /// before honouring SIGTERM).
+    pub fn stop_when(&mut self, flag: &'static std::sync::atomic::AtomicBool) {
+        self.stop = Some(flag);
+    }
+
     /// Opens the device and builds the pipelines.
     pub fn new(options: RendererOptions) -> Result<Self> {
         crate::settings::init()?;
@@ -75,6 +86,7 @@ impl Renderer {
             resources,
             pipelines,
             gpu,
+            stop: None,
         })
     }
 

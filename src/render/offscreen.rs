@@ -112,6 +112,12 @@ impl Renderer {
         self.ensure_mean((width, height))?;
         let mut timings = FrameTimings::default();
         for i in 0..spp {
+            if self
+                .stop
+                .is_some_and(|f| f.load(std::sync::atomic::Ordering::SeqCst))
+            {
+                return Err(Error::Interrupted);
+            }
             let owned = for_output(sample_scene(i));
             let scene = &owned;
             let build = std::time::Instant::now();
