@@ -33,6 +33,30 @@ fn steep_share(img: &image::RgbImage) -> f64 {
     f64::from(steep) / f64::from(all)
 }
 
+/// The temporaries in `dir`.
+fn temporaries(dir: &tempfile::TempDir) -> Vec<std::path::PathBuf> {
+    std::fs::read_dir(dir.path())
+        .expect("lists")
+        .filter_map(|e| e.ok())
+        .map(|e| e.path())
+        .filter(|p| p.to_string_lossy().ends_with(".tmp"))
+        .collect()
+}
+
+/// Waits for a video's temporary (ffmpeg started), then half a second more
+/// (frames going in).
+fn wait_for_frames_going_in(dir: &tempfile::TempDir) {
+    let t0 = std::time::Instant::now();
+    while temporaries(dir).is_empty() {
+        assert!(
+            t0.elapsed().as_secs() < 120,
+            "no temporary after two minutes"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    std::thread::sleep(std::time::Duration::from_millis(500));
+}
+
 #[test]
 fn an_open_shutter_blurs_an_orbiting_camera_and_stays_deterministic() {
     let dir = scratch();
@@ -150,23 +174,7 @@ fn an_interrupted_video_leaves_no_file() {
     .stdout(Stdio::piped())
     .stderr(Stdio::piped());
     let mut child = c.spawn().expect("starts");
-    // Wait for the temporary (ffmpeg has started and frames are going in).
-    let t0 = std::time::Instant::now();
-    loop {
-        let tmp = std::fs::read_dir(dir.path())
-            .expect("lists")
-            .filter_map(|e| e.ok())
-            .any(|e| e.file_name().to_string_lossy().ends_with(".tmp"));
-        if tmp {
-            break;
-        }
-        assert!(
-            t0.elapsed().as_secs() < 120,
-            "no temporary after two minutes"
-        );
-        std::thread::sleep(std::time::Duration::from_millis(20));
-    }
-    std::thread::sleep(std::time::Duration::from_millis(500));
+    wait_for_frames_going_in(&dir);
     Command::new("kill")
         .args(["-INT", &child.id().to_string()])
         .status()
@@ -324,28 +332,12 @@ fn a_killed_video_run_takes_its_encoder_and_the_next_run_cleans_up() {
     .stdout(Stdio::null())
     .stderr(Stdio::null());
     let mut child = c.spawn().expect("starts");
-    let temps = || -> Vec<std::path::PathBuf> {
-        std::fs::read_dir(dir.path())
-            .expect("lists")
-            .filter_map(|e| e.ok())
-            .map(|e| e.path())
-            .filter(|p| p.to_string_lossy().ends_with(".tmp"))
-            .collect()
-    };
-    let t0 = std::time::Instant::now();
-    while temps().is_empty() {
-        assert!(
-            t0.elapsed().as_secs() < 120,
-            "no temporary after two minutes"
-        );
-        std::thread::sleep(std::time::Duration::from_millis(20));
-    }
-    std::thread::sleep(std::time::Duration::from_millis(500));
+    wait_for_frames_going_in(&dir);
     child.kill().expect("SIGKILL");
     child.wait().expect("waits");
     // The encoder went with it: the temporary stops growing at once.
     std::thread::sleep(std::time::Duration::from_millis(500));
-    let left = temps();
+    let left = temporaries(&dir);
     assert_eq!(left.len(), 1, "{left:?}");
     let size = |p: &std::path::Path| std::fs::metadata(p).map(|m| m.len()).unwrap_or(0);
     let before = size(&left[0]);

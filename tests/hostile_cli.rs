@@ -3,7 +3,18 @@
 
 mod common;
 
-use common::{blackhole, refused_early, scratch};
+use common::{blackhole, refused_early, render_scene, scratch};
+
+/// The one-line refusal of rendering the scene `toml` (with `extra`
+/// arguments), checked to leave no output.
+fn refused(dir: &tempfile::TempDir, toml: &str, extra: &[&str]) -> String {
+    let out = dir.path().join("x.png");
+    let mut c = render_scene(dir, toml, extra);
+    c.arg("--out").arg(&out);
+    let e = refused_early(c);
+    assert!(!out.exists(), "{toml}: an output was written");
+    e
+}
 
 /// A negative number given to a numeric option is that option's value,
 /// refused by its own rule (once clap took `-0.5` for an unknown flag and
@@ -57,18 +68,11 @@ fn two_outputs_of_one_run_on_one_file_are_refused() {
 #[test]
 fn an_isco_inner_radius_is_quoted_as_the_isco() {
     let dir = scratch();
-    let scene = dir.path().join("s.toml");
-    std::fs::write(
-        &scene,
+    let e = refused(
+        &dir,
         "[[black_hole]]\nspin = -0.998\n[disk]\nouter_radius = 4.0\n",
-    )
-    .expect("writing the scene");
-    let mut c = blackhole();
-    c.args(["render", "--scene"])
-        .arg(&scene)
-        .arg("--out")
-        .arg(dir.path().join("x.png"));
-    let e = refused_early(c);
+        &[],
+    );
     assert!(
         e.contains("disk.outer_radius = 4")
             && e.contains("\"isco\", 4.4972 rs, the ISCO at spin -0.998"),
@@ -82,25 +86,13 @@ fn an_isco_inner_radius_is_quoted_as_the_isco() {
 #[test]
 fn frame_rates_no_video_holds_are_refused_up_front() {
     let dir = scratch();
-    let scene = dir.path().join("s.toml");
     for fps in ["1e-6", "1e9", "0.0"] {
-        std::fs::write(
-            &scene,
-            format!("[animation]\nfps = {fps}\ncamera = \"orbit\"\n"),
-        )
-        .expect("writing the scene");
-        let out = dir.path().join("v.mp4");
-        let mut c = blackhole();
-        c.args(["render", "--frames", "0..3", "--scene"])
-            .arg(&scene)
-            .arg("--out")
-            .arg(&out);
-        let e = refused_early(c);
+        let toml = format!("[animation]\nfps = {fps}\ncamera = \"orbit\"\n");
+        let e = refused(&dir, &toml, &["--frames", "0..3"]);
         assert!(
             e.contains("animation.fps") && e.contains("from 0.01 to 1000"),
             "{fps}: {e}"
         );
-        assert!(!out.exists());
     }
 }
 
@@ -109,22 +101,9 @@ fn frame_rates_no_video_holds_are_refused_up_front() {
 #[test]
 fn a_number_the_mode_ignores_is_checked_all_the_same() {
     let dir = scratch();
-    let scene = dir.path().join("s.toml");
-    std::fs::write(
-        &scene,
-        "[camera]\nprojection = \"equirect\"\nvfov_deg = nan\n",
-    )
-    .expect("writing the scene");
-    let mut c = blackhole();
-    c.args(["render", "--scene"])
-        .arg(&scene)
-        .arg("--out")
-        .arg(dir.path().join("x.png"));
-    let e = refused_early(c);
-    assert!(
-        e.contains("camera.vfov_deg = NaN") || e.contains("camera.vfov_deg = nan"),
-        "{e}"
-    );
+    let toml = "[camera]\nprojection = \"equirect\"\nvfov_deg = nan\n";
+    let e = refused(&dir, toml, &[]);
+    assert!(e.contains("camera.vfov_deg = NaN"), "{e}");
 }
 
 /// `trace` at a spin of 1e-16 draws the photon paths as at 1e-14 (once it
@@ -158,21 +137,11 @@ fn a_vanishing_spin_still_traces_its_photon_paths() {
 #[test]
 fn an_orbit_on_the_axis_is_refused_at_every_spin() {
     let dir = scratch();
-    let scene = dir.path().join("s.toml");
     for spin in ["0.0", "1e-9", "0.5", "-0.9"] {
-        std::fs::write(
-            &scene,
-            format!(
-                "[[black_hole]]\nspin = {spin}\n[camera]\nposition = [0.0, 10.0, 0.0]\nup = [0.0, 0.0, 1.0]\nobserver = \"orbiting\"\n"
-            ),
-        )
-        .expect("writing the scene");
-        let mut c = blackhole();
-        c.args(["render", "--scene"])
-            .arg(&scene)
-            .arg("--out")
-            .arg(dir.path().join("x.png"));
-        let e = refused_early(c);
+        let toml = format!(
+            "[[black_hole]]\nspin = {spin}\n[camera]\nposition = [0.0, 10.0, 0.0]\nup = [0.0, 0.0, 1.0]\nobserver = \"orbiting\"\n"
+        );
+        let e = refused(&dir, &toml, &[]);
         assert!(
             e.contains("camera.position") && e.contains("disk's axis"),
             "{spin}: {e}"
@@ -186,7 +155,6 @@ fn an_orbit_on_the_axis_is_refused_at_every_spin() {
 #[test]
 fn light_travel_time_where_it_cannot_act_is_refused() {
     let dir = scratch();
-    let scene = dir.path().join("s.toml");
     for (toml, why) in [
         (
             "[[black_hole]]\nposition = [0.0, 0.0, 0.0]\n[[black_hole]]\nposition = [20.0, 0.0, 0.0]\n",
@@ -194,17 +162,8 @@ fn light_travel_time_where_it_cannot_act_is_refused() {
         ),
         ("[disk]\nkind = \"volumetric\"\n", "volumetric"),
     ] {
-        std::fs::write(
-            &scene,
-            format!("{toml}[animation]\nlight_travel_time = true\n"),
-        )
-        .expect("writing the scene");
-        let mut c = blackhole();
-        c.args(["render", "--scene"])
-            .arg(&scene)
-            .arg("--out")
-            .arg(dir.path().join("x.png"));
-        let e = refused_early(c);
+        let toml = format!("{toml}[animation]\nlight_travel_time = true\n");
+        let e = refused(&dir, &toml, &[]);
         assert!(
             e.contains("animation.light_travel_time = true") && e.contains(why),
             "{e}"
@@ -246,29 +205,17 @@ fn ods_heights_that_do_not_split_into_two_eyes_are_refused() {
 #[test]
 fn every_instant_a_frame_samples_obeys_the_camera_rules() {
     let dir = scratch();
-    let scene = dir.path().join("s.toml");
-    std::fs::write(
-        &scene,
-        "[[black_hole]]\nspin = 0.9\n[camera]\nposition = [0.0, 0.0, -3.0]\nobserver = \"static\"\n[animation]\ncamera = \"fall\"\nfall_seconds = 1.0\nfps = 1.0\nshutter = 1.0\n",
-    )
-    .expect("writing the scene");
-    for frames in [&["--frames", "0..1"][..], &[][..]] {
-        let out = dir.path().join("x.png");
-        let mut c = blackhole();
-        c.args([
-            "render", "--spp", "16", "--width", "32", "--height", "18", "--scene",
-        ])
-        .arg(&scene)
-        .args(frames)
-        .arg("--out")
-        .arg(&out);
-        let e = refused_early(c);
+    let toml = "[[black_hole]]\nspin = 0.9\n[camera]\nposition = [0.0, 0.0, -3.0]\nobserver = \"static\"\n[animation]\ncamera = \"fall\"\nfall_seconds = 1.0\nfps = 1.0\nshutter = 1.0\n";
+    for frames in [
+        &["--spp", "16", "--frames", "0..1"][..],
+        &["--spp", "16"][..],
+    ] {
+        let e = refused(&dir, toml, frames);
         assert!(
             e.contains("frame 0 (t = 0.9575 s: sample 15 of 16, shutter 1)")
                 && e.contains("ergoregion"),
             "{e}"
         );
-        assert!(std::fs::read_dir(dir.path()).expect("listing").count() == 1);
     }
 }
 
@@ -278,7 +225,6 @@ fn every_instant_a_frame_samples_obeys_the_camera_rules() {
 #[test]
 fn ods_eyes_obey_the_observers_rules() {
     let dir = scratch();
-    let scene = dir.path().join("s.toml");
     for (toml, why) in [
         (
             "[[black_hole]]\nspin = 0.9\n[camera]\nposition = [0.0, 0.0, -1.12]\nlook_at = [5.0, 0.0, -1.12]\nobserver = \"static\"\n",
@@ -289,17 +235,8 @@ fn ods_eyes_obey_the_observers_rules() {
             "photon sphere",
         ),
     ] {
-        std::fs::write(
-            &scene,
-            format!("{toml}projection = \"equirect\"\nstereo = \"ods\"\nipd = 0.1\n"),
-        )
-        .expect("writing the scene");
-        let mut c = blackhole();
-        c.args(["render", "--width", "32", "--height", "16", "--scene"])
-            .arg(&scene)
-            .arg("--out")
-            .arg(dir.path().join("x.png"));
-        let e = refused_early(c);
+        let toml = format!("{toml}projection = \"equirect\"\nstereo = \"ods\"\nipd = 0.1\n");
+        let e = refused(&dir, &toml, &[]);
         assert!(
             e.contains("camera.ipd = 0.1: puts an eye at") && e.contains(why),
             "{e}"
