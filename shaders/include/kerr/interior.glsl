@@ -1,5 +1,6 @@
-// A falling camera between a spinning hole's horizons (KERR_INSIDE): the
-// GPU twin of src/physics/kerr/interior.rs, which documents the forms.
+// A falling camera between a spinning hole's horizons, or outside within 5 %
+// of r+ (KERR_INSIDE): the GPU twin of src/physics/kerr/interior.rs, which
+// documents the forms.
 // No static frame or ZAMO exists there, so the pixel's photon comes from the
 // falling frame built from the Boyer-Lindquist metric (the frame of an
 // observer falling from rest at infinity with no angular momentum, its
