@@ -143,7 +143,9 @@ pub struct VideoWriter {
 
 impl VideoWriter {
     /// Starts ffmpeg writing a `width` x `height` video at `fps` frames a
-    /// second for `target`.
+    /// second for `target`. On Linux ffmpeg is killed when the thread that
+    /// started it ends (PR_SET_PDEATHSIG): start it from the thread that
+    /// outlives the video (the command line's main thread).
     pub fn start(
         target: &Path,
         container: Container,
