@@ -250,6 +250,8 @@ impl Job<'_> {
         let (width, height) = (self.width, self.height);
         let total = range.end - range.start;
         let mut renderer = Renderer::new(RendererOptions::default())?;
+        // A signal stops it between samples (within one sample's time).
+        renderer.stop_when(&STOP);
         let start = Instant::now();
         let fps = self.scene.animation.fps;
         let mut writer = VideoWriter::start(self.out, container, (width, height), fps)?;
@@ -259,7 +261,11 @@ impl Job<'_> {
                 break;
             }
             let at = |s| self.scene.at_sample(i, s, self.spp);
-            let frame = renderer.render_samples_with(&at, width, height, self.kind, self.spp)?;
+            let frame = match renderer.render_samples_with(&at, width, height, self.kind, self.spp)
+            {
+                Err(Error::Interrupted) => break,
+                other => other?,
+            };
             writer.push(&frame)?;
             bar.inc(1);
         }
@@ -293,6 +299,8 @@ impl Job<'_> {
         let todo = total - done.len() as u64;
         TODO.store(todo, Ordering::SeqCst);
         let mut renderer = Renderer::new(RendererOptions::default())?;
+        // A signal stops it between samples (within one sample's time).
+        renderer.stop_when(&STOP);
         let start = Instant::now();
         let bar = progress_bar(todo);
         for i in range.clone().filter(|i| !done.contains(i)) {
@@ -301,7 +309,11 @@ impl Job<'_> {
             }
             let path = numbered(self.out, i);
             let at = |s| self.scene.at_sample(i, s, self.spp);
-            let frame = renderer.render_samples_with(&at, width, height, self.kind, self.spp)?;
+            let frame = match renderer.render_samples_with(&at, width, height, self.kind, self.spp)
+            {
+                Err(Error::Interrupted) => break,
+                other => other?,
+            };
             output::write_frame(&frame, &path, self.format)?;
             WRITTEN.fetch_add(1, Ordering::SeqCst);
             bar.set_message(format!("{}", path.display()));
