@@ -43,6 +43,32 @@ fn temporaries(dir: &tempfile::TempDir) -> Vec<std::path::PathBuf> {
         .collect()
 }
 
+/// Starts a 100,000-frame video to `out` (its output streams made by
+/// `stdio`) and waits until frames are going in.
+fn start_long_video(
+    dir: &tempfile::TempDir,
+    out: &std::path::Path,
+    stdio: fn() -> Stdio,
+) -> std::process::Child {
+    let mut c = blackhole();
+    c.args([
+        "render",
+        "--width",
+        "320",
+        "--height",
+        "180",
+        "--frames",
+        "0..100000",
+    ])
+    .arg("--out")
+    .arg(out)
+    .stdout(stdio())
+    .stderr(stdio());
+    let child = c.spawn().expect("starts");
+    wait_for_frames_going_in(dir);
+    child
+}
+
 /// Waits for a video's temporary (ffmpeg started), then half a second more
 /// (frames going in).
 fn wait_for_frames_going_in(dir: &tempfile::TempDir) {
@@ -159,22 +185,7 @@ fn video_without_ffmpeg_is_refused_in_one_line_naming_the_package() {
 fn an_interrupted_video_leaves_no_file() {
     let dir = scratch();
     let out = path_in(&dir, "film.mp4");
-    let mut c = blackhole();
-    c.args([
-        "render",
-        "--width",
-        "320",
-        "--height",
-        "180",
-        "--frames",
-        "0..100000",
-    ])
-    .arg("--out")
-    .arg(&out)
-    .stdout(Stdio::piped())
-    .stderr(Stdio::piped());
-    let mut child = c.spawn().expect("starts");
-    wait_for_frames_going_in(&dir);
+    let mut child = start_long_video(&dir, &out, Stdio::piped);
     Command::new("kill")
         .args(["-INT", &child.id().to_string()])
         .status()
@@ -317,22 +328,7 @@ fn a_disk_full_while_encoding_fails_the_run_and_leaves_no_file() {
 fn a_killed_video_run_takes_its_encoder_and_the_next_run_cleans_up() {
     let dir = scratch();
     let out = path_in(&dir, "film.mp4");
-    let mut c = blackhole();
-    c.args([
-        "render",
-        "--width",
-        "320",
-        "--height",
-        "180",
-        "--frames",
-        "0..100000",
-    ])
-    .arg("--out")
-    .arg(&out)
-    .stdout(Stdio::null())
-    .stderr(Stdio::null());
-    let mut child = c.spawn().expect("starts");
-    wait_for_frames_going_in(&dir);
+    let mut child = start_long_video(&dir, &out, Stdio::null);
     child.kill().expect("SIGKILL");
     child.wait().expect("waits");
     // The encoder went with it: the temporary stops growing at once.
