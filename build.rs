@@ -3,6 +3,10 @@
 
 use std::path::{Path, PathBuf};
 
+// Linked for its build script's link lines only: the static glslang and
+// SPIRV-Tools a distribution's shaderc leaves out (tools/system-shaderc).
+use system_shaderc as _;
+
 /// Extra builds of a shader with preprocessor macros: (source, output stem, defines).
 const VARIANTS: &[(&str, &str, &[&str])] =
     &[("composite.comp", "composite_hdr.comp", &["HDR_OUTPUT"])];
