@@ -73,7 +73,6 @@ fn run() -> Result<(), String> {
     println!("cargo:rerun-if-changed={}", shader_dir.display());
     println!("cargo:rerun-if-changed={}", include_dir.display());
 
-    let compiler = shaderc::Compiler::new().map_err(|e| format!("starting shaderc: {e}"))?;
     let mut sources: Vec<PathBuf> = std::fs::read_dir(&shader_dir)
         .map_err(|e| format!("{}: {e}", shader_dir.display()))?
         .filter_map(|e| e.ok().map(|e| e.path()))
@@ -87,7 +86,10 @@ fn run() -> Result<(), String> {
         println!("cargo:rerun-if-changed={}", p.display());
     }
 
-    let mut errors = Vec::new();
+    // Every build of every source, compiled on as many threads as there are
+    // cores (each with its own compiler): the largest part of a first build
+    // after the crates.
+    let mut jobs = Vec::new();
     for src in &sources {
         println!("cargo:rerun-if-changed={}", src.display());
         let name = src
@@ -95,13 +97,51 @@ fn run() -> Result<(), String> {
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
         for (stem, defines) in builds_of(&name) {
-            match compile(&compiler, src, &include_dir, &defines) {
-                Ok(words) => {
-                    let dst = out.join(format!("{stem}.spv"));
-                    std::fs::write(&dst, words).map_err(|e| format!("{}: {e}", dst.display()))?;
-                }
-                Err(e) => errors.push(format!("{stem}: {e}")),
+            jobs.push((src.as_path(), stem, defines));
+        }
+    }
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let results: Vec<Vec<(usize, Result<Vec<u8>, String>)>> = std::thread::scope(|scope| {
+        let workers: Vec<_> = (0..threads.min(jobs.len()))
+            .map(|_| {
+                scope.spawn(|| {
+                    let mut done = Vec::new();
+                    let compiler = shaderc::Compiler::new();
+                    loop {
+                        let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                        let Some((src, _, defines)) = jobs.get(i) else {
+                            break;
+                        };
+                        let words = match &compiler {
+                            Ok(c) => compile(c, src, &include_dir, defines),
+                            Err(e) => Err(format!("starting shaderc: {e}")),
+                        };
+                        done.push((i, words));
+                    }
+                    done
+                })
+            })
+            .collect();
+        workers
+            .into_iter()
+            .map(|w| w.join().unwrap_or_default())
+            .collect()
+    });
+    let mut results: Vec<_> = results.into_iter().flatten().collect();
+    results.sort_by_key(|(i, _)| *i);
+    if results.len() != jobs.len() {
+        return Err("a shader compiler thread stopped early".to_string());
+    }
+    let mut errors = Vec::new();
+    for (i, words) in results {
+        let stem = &jobs[i].1;
+        match words {
+            Ok(words) => {
+                let dst = out.join(format!("{stem}.spv"));
+                std::fs::write(&dst, words).map_err(|e| format!("{}: {e}", dst.display()))?;
             }
+            Err(e) => errors.push(format!("{stem}: {e}")),
         }
     }
     if errors.is_empty() {
