@@ -57,6 +57,9 @@ fn builds_of(name: &str) -> Vec<(String, Vec<&'static str>)> {
     builds
 }
 
+/// One build's SPIR-V (or its errors), by its index among the builds.
+type Compiled = (usize, Result<Vec<u8>, String>);
+
 fn main() {
     if let Err(e) = run() {
         // One line per error, as `file:line: message`, then fail the build.
@@ -102,7 +105,7 @@ fn run() -> Result<(), String> {
     }
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     let next = std::sync::atomic::AtomicUsize::new(0);
-    let results: Vec<Vec<(usize, Result<Vec<u8>, String>)>> = std::thread::scope(|scope| {
+    let results: Vec<Vec<Compiled>> = std::thread::scope(|scope| {
         let workers: Vec<_> = (0..threads.min(jobs.len()))
             .map(|_| {
                 scope.spawn(|| {

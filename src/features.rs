@@ -24,6 +24,11 @@ pub struct RendererOptions {
     /// Compute a spinning hole's per-ray constants in 64-bit floats where
     /// the device has them (`BLACKHOLE_NO_F64=1` takes the 32-bit build).
     pub float64: bool,
+    /// Compile a scene's static parameters into its ray march
+    /// ([`crate::passes::raymarch::baked`]; `BLACKHOLE_NO_BAKE=1` reads them
+    /// from the parameter block). The window turns it off: its panel
+    /// changes them between frames, and each change would build a pipeline.
+    pub bake: bool,
 }
 
 impl Default for RendererOptions {
@@ -34,6 +39,7 @@ impl Default for RendererOptions {
             ray_differentials: !settings.no_quad,
             split: !settings.no_split,
             float64: !settings.no_f64,
+            bake: !settings.no_bake,
         }
     }
 }
@@ -55,6 +61,9 @@ pub struct Features {
     /// has; without them the build with 32-bit roots, exact away from a thin
     /// band around the shadow's outline.
     pub kerr_f64: bool,
+    /// The ray march has the scene's static parameters compiled in
+    /// ([`RendererOptions::bake`]).
+    pub bake: bool,
 }
 
 impl Features {
@@ -65,6 +74,7 @@ impl Features {
             ray_differentials,
             split: deferred::device_splits(info, ray_differentials) && options.split,
             kerr_f64: info.float64 && options.float64,
+            bake: options.bake,
         }
     }
 

@@ -31,6 +31,10 @@ pub struct Settings {
     /// `BLACKHOLE_NO_F64`: a spinning hole's per-ray constants in 32-bit
     /// floats, as on a device without 64-bit floats in shaders.
     pub no_f64: bool,
+    /// `BLACKHOLE_NO_BAKE`: offscreen ray marches read the scene's static
+    /// parameters from the block, as the window does, instead of compiling
+    /// them in.
+    pub no_bake: bool,
     /// `BLACKHOLE_FAULT`: a failure injected for the tests.
     pub fault: Option<Fault>,
 }
@@ -51,6 +55,7 @@ impl Default for Settings {
             no_split: false,
             no_quad: false,
             no_f64: false,
+            no_bake: false,
             fault,
         }
     }
@@ -70,6 +75,7 @@ pub const KNOWN: &[(&str, &str)] = &[
     ("BLACKHOLE_NO_SPLIT", "1 or 0"),
     ("BLACKHOLE_NO_QUAD", "1 or 0"),
     ("BLACKHOLE_NO_F64", "1 or 0"),
+    ("BLACKHOLE_NO_BAKE", "1 or 0"),
     (
         "BLACKHOLE_FAULT",
         "device-lost, out-of-device-memory or alloc:<resource name>",
@@ -131,6 +137,7 @@ impl Settings {
                 "BLACKHOLE_NO_SPLIT" => s.no_split = switch(name, value)?,
                 "BLACKHOLE_NO_QUAD" => s.no_quad = switch(name, value)?,
                 "BLACKHOLE_NO_F64" => s.no_f64 = switch(name, value)?,
+                "BLACKHOLE_NO_BAKE" => s.no_bake = switch(name, value)?,
                 "BLACKHOLE_FAULT" => {
                     s.fault = Some(fault::parse(value).ok_or_else(|| bad(name, value))?);
                 }

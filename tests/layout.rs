@@ -411,13 +411,24 @@ fn specialization_constants(src: &str) -> Vec<(u32, String)> {
 
 #[test]
 fn specialization_constants_match_the_glsl_ids() {
-    for (src, names) in [
+    use blackhole::passes::raymarch::{Variant, baked};
+    let baked_names: Vec<&str> = std::iter::once("BAKED")
+        .chain(baked::BAKED_NAMES.iter().copied())
+        .collect();
+    for (src, first, names) in [
         (
             include_str!("../shaders/include/variant.glsl"),
-            &blackhole::passes::raymarch::Variant::CONSTANT_NAMES[..],
+            0,
+            &Variant::CONSTANT_NAMES[..],
+        ),
+        (
+            include_str!("../shaders/include/baked.glsl"),
+            baked::BAKED_FIRST_ID,
+            &baked_names[..],
         ),
         (
             include_str!("../shaders/composite.comp"),
+            0,
             &blackhole::passes::composite::Variant::CONSTANT_NAMES[..],
         ),
     ] {
@@ -425,10 +436,15 @@ fn specialization_constants_match_the_glsl_ids() {
         let rust: Vec<(u32, String)> = names
             .iter()
             .enumerate()
-            .map(|(i, n)| (i as u32, (*n).to_string()))
+            .map(|(i, n)| (first + i as u32, (*n).to_string()))
             .collect();
         assert_eq!(glsl, rust);
     }
+    // The ray march's constants: the variant's, then the baked ones.
+    assert_eq!(
+        baked::BAKED_FIRST_ID as usize,
+        Variant::CONSTANT_NAMES.len()
+    );
 }
 
 /// Offsets of a push-constant block in `spirv` against the Rust struct's.

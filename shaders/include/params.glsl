@@ -146,8 +146,11 @@ layout(std430, binding = RM_PARAMS) readonly buffer RaymarchParamsBlock {
 // a sixth of the disk pass's). Only the fields a pipeline uses are read.
 RaymarchParams P;
 
+#include "baked.glsl"
+
 void read_params() {
     P = params_block.params;
+    bake_params();
 }
 
 #endif

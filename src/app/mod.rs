@@ -183,7 +183,13 @@ impl App {
             self.options.present,
             FRAMES_IN_FLIGHT,
         )?;
-        let renderer = Renderer::with_gpu(gpu.clone(), crate::RendererOptions::default())?;
+        // The panel changes the scene's static parameters between frames:
+        // read from the parameter block, not compiled in (a pipeline each).
+        let options = crate::RendererOptions {
+            bake: false,
+            ..Default::default()
+        };
+        let renderer = Renderer::with_gpu(gpu.clone(), options)?;
         let scene = self.options.scene.clone();
         let gui = Gui::new(&gpu, &window, swapchain.format, FRAMES_IN_FLIGHT, &scene)?;
         log::info!(

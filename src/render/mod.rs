@@ -118,7 +118,7 @@ impl Renderer {
     /// by it ([`crate::deferred`]), one dispatch otherwise.
     pub fn ray_march_passes(&self, scene: &Scene, width: u32, height: u32) -> Vec<&'static str> {
         let spacetime = Spacetime::of(scene);
-        let variant = raymarch::Variant::of(scene, &spacetime, false);
+        let variant = raymarch::Variant::of(scene, &spacetime, false, self.features().bake);
         raymarch::pass_names(
             variant,
             self.features().splits(scene, &spacetime, width, height),
@@ -216,7 +216,8 @@ impl Renderer {
         // The ray march specialised for this scene, built now rather than
         // while a frame records (a new variant takes lavapipe a moment):
         // split and whole, as a moving camera may need either.
-        let variant = raymarch::Variant::of(scene, &Spacetime::of(scene), false);
+        let variant =
+            raymarch::Variant::of(scene, &Spacetime::of(scene), false, self.features().bake);
         for split in [true, false] {
             for stage in self.pipelines.raymarch.stages(variant, split) {
                 self.pipelines.raymarch.pipeline(stage)?;

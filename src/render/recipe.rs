@@ -75,7 +75,12 @@ pub fn add_frame<'a>(
                     raymarch::RaymarchOutput::Beauty
                 },
                 size,
-                variant: raymarch::Variant::of(scene, spacetime, output == OutputKind::Geodesic),
+                variant: raymarch::Variant::of(
+                    scene,
+                    spacetime,
+                    output == OutputKind::Geodesic,
+                    pipelines.features().bake,
+                ),
                 split: pipelines
                     .features()
                     .splits(scene, spacetime, size.0, size.1),

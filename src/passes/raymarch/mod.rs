@@ -22,8 +22,10 @@
 
 use ash::vk;
 
+pub mod baked;
 pub mod params;
 
+pub use baked::Baked;
 pub use params::{FrameSpec, RaymarchParams};
 use params::{disk_kind, sky_kind};
 
@@ -146,11 +148,22 @@ pub struct Variant {
     /// falling frame, azimuth and time in ingoing form (constant 12; never
     /// split).
     pub kerr_inside: bool,
+    /// The scene's static parameters compiled in ([`baked`]; constants 13
+    /// on), or read from the parameter block.
+    pub baked: Option<Baked>,
 }
 
 impl Variant {
-    /// The variant a scene needs.
-    pub fn of(scene: &Scene, spacetime: &Spacetime, aov: bool) -> Variant {
+    /// The variant a scene needs, with its static parameters compiled in
+    /// if `bake` ([`crate::features::Features::bake`]).
+    pub fn of(scene: &Scene, spacetime: &Spacetime, aov: bool, bake: bool) -> Variant {
+        let baked = bake.then(|| {
+            Baked::of(&RaymarchParams::new(
+                scene,
+                spacetime,
+                &FrameSpec::new(1, 1),
+            ))
+        });
         Variant {
             aov,
             path: spacetime.gpu_path(),
@@ -172,6 +185,7 @@ impl Variant {
             projection: scene.camera.projection.gpu_id(),
             rain_form: spacetime.camera_observer(scene).rain.is_some(),
             kerr_inside: spacetime.camera_inside_spinning(scene),
+            baked,
         }
     }
 
@@ -210,8 +224,11 @@ impl Variant {
         "KERR_INSIDE",
     ];
 
-    pub fn constants(&self) -> [u32; 13] {
-        [
+    /// Every constant in `constant_id` order: the 13 of
+    /// [`Variant::CONSTANT_NAMES`], then `BAKED` and the baked values
+    /// ([`baked::BAKED_NAMES`]; zeros when not baked).
+    pub fn constants(&self) -> Vec<u32> {
+        let mut all = vec![
             self.disk,
             self.sky,
             u32::from(self.plane),
@@ -225,13 +242,17 @@ impl Variant {
             self.projection,
             u32::from(self.rain_form),
             u32::from(self.kerr_inside),
-        ]
+        ];
+        all.push(u32::from(self.baked.is_some()));
+        all.extend(self.baked.map_or([0; baked::BAKED_COUNT], |b| b.0));
+        all
     }
 
     pub fn name(&self) -> String {
         format!(
-            "raymarch{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {}, page-thorne {}, projection {}, rain form {}, kerr inside {})",
+            "raymarch{}{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {}, page-thorne {}, projection {}, rain form {}, kerr inside {})",
             if self.aov { " aov" } else { "" },
+            if self.baked.is_some() { " baked" } else { "" },
             self.path,
             self.disk,
             self.sky,
