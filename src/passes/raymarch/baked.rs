@@ -173,3 +173,46 @@ impl Baked {
         )
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::passes::raymarch::FrameSpec;
+    use crate::scene::Scene;
+    use crate::spacetime::Spacetime;
+
+    fn baked(scene: &Scene, frame: &FrameSpec) -> Baked {
+        Baked::of(&RaymarchParams::new(scene, &Spacetime::of(scene), frame))
+    }
+
+    /// Nothing baked moves with the camera, the frame or the time: a
+    /// sequence (an orbit, a fall, the disk turning) builds its pipeline
+    /// once, and the baked values are right in every frame.
+    #[test]
+    fn baked_values_are_the_same_in_every_frame_of_a_scene() {
+        for name in ["default", "interstellar", "gargantua", "falling", "grid"] {
+            let scene = Scene::load(name).unwrap();
+            let first = baked(&scene, &FrameSpec::new(1, 1));
+            let mut later = scene.clone();
+            later.time = 12.5;
+            later.camera.position = [3.0, -2.0, -9.0];
+            later.camera.vfov_deg = 35.0;
+            let frame = FrameSpec {
+                jitter: (0.25, -0.25),
+                ..FrameSpec::new(640, 360)
+            };
+            assert_eq!(first, baked(&later, &frame), "{name}");
+        }
+    }
+
+    /// Every baked value is read from the block: a change of one scene key
+    /// changes it.
+    #[test]
+    fn baked_values_follow_the_scene() {
+        let scene = Scene::load("default").unwrap();
+        let mut other = scene.clone();
+        other.disk.inner_radius = 4.0;
+        let frame = FrameSpec::new(1, 1);
+        assert_ne!(baked(&scene, &frame), baked(&other, &frame));
+    }
+}
