@@ -28,6 +28,9 @@ pub struct RendererOptions {
     /// ([`crate::passes::raymarch::baked`]; `BLACKHOLE_NO_BAKE=1` reads them
     /// from the parameter block). The window turns it off: its panel
     /// changes them between frames, and each change would build a pipeline.
+    /// Each scene with other static values builds (and keeps) pipelines of
+    /// its own: a program that renders many different scenes with one
+    /// `Renderer` may turn it off too.
     pub bake: bool,
 }
 
