@@ -10,6 +10,12 @@
 //! spirv-tools). This build script finds the folder the same way and, where
 //! the combined library lacks glslang and the separate libraries are there,
 //! links them after it. Anything else it leaves to shaderc-sys.
+//!
+//! (shaderc-sys's pkg-config probe also names the shared `libshaderc.so`,
+//! which leaves glslang's symbols undefined; the linker drops it, as rustc
+//! links with `--as-needed` and the static archives resolve everything, so
+//! the build script carries one shaderc, all static: `ldd` on it names no
+//! shaderc.)
 
 use std::env;
 use std::fs;
