@@ -10,8 +10,9 @@ mod common;
 
 use common::{assert_clean, path_in, render_command, run, scratch};
 
-/// Each scene rendered to EXR baked and not; the second value is whether
-/// the AOV is compared instead of the image.
+/// Each scene rendered to EXR baked and not: a preset's name (its TOML
+/// empty) or a name and its TOML, and whether the geodesic AOV is compared
+/// instead of the image.
 const SCENES: [(&str, &str, bool); 7] = [
     ("default", "", false),
     ("interstellar", "", false),
