@@ -80,7 +80,8 @@ profile() {  # label, env, scene, width, height
     profile "VR (equirect, ods stereo)" "" $s/vr.toml "$side" "$side"
 } >"$OUT/profile.txt" 2>&1
 
-# The test binaries, one at a time (each is timed out at 150 s).
+# The test binaries, one at a time (each timed out at TEST_TIMEOUT seconds,
+# 150 unless set).
 rm -rf /tmp/gpu-tests && mkdir -p /tmp/gpu-tests
 {
     for z in .gpu/tests/*.xz; do
@@ -89,7 +90,7 @@ rm -rf /tmp/gpu-tests && mkdir -p /tmp/gpu-tests
         unxz "$z" /tmp/gpu-tests/$name
         echo "== $name"
         log=/tmp/gpu-tests/$name.log
-        timeout 150 /tmp/gpu-tests/$name --test-threads=4 >"$log" 2>&1
+        timeout "${TEST_TIMEOUT:-150}" /tmp/gpu-tests/$name --test-threads=4 >"$log" 2>&1
         rc=$?
         cat "$log"
         echo "== $name: exit $rc, $(grep '^test result' "$log" | tail -1)" | tee -a /tmp/gpu-tests/summary
