@@ -82,6 +82,12 @@ layout(constant_id = 79) const float BAKED_PLANE_AXIS_X = 0.0;
 layout(constant_id = 80) const float BAKED_PLANE_AXIS_Y = 0.0;
 layout(constant_id = 81) const float BAKED_PLANE_AXIS_Z = 0.0;
 layout(constant_id = 82) const float BAKED_PLANE_HALF_SIZE = 0.0;
+// The number of holes (the loops over them run to a constant: a
+// non-rotating metric's static frame and the straight and summed paths'
+// capture tests) and the sky's scale (the catalogue's grid: its level's
+// arithmetic folds).
+layout(constant_id = 83) const float BAKED_HOLE_COUNT = 0.0;
+layout(constant_id = 84) const float BAKED_SKY_SCALE = 0.0;
 
 // Overwrites the block's copy with the baked values (a no-op unless BAKED).
 void bake_params() {
@@ -155,6 +161,8 @@ void bake_params() {
     P.plane.axis.y = BAKED_PLANE_AXIS_Y;
     P.plane.axis.z = BAKED_PLANE_AXIS_Z;
     P.plane.half_size = BAKED_PLANE_HALF_SIZE;
+    P.metric.hole_count = uint(BAKED_HOLE_COUNT);
+    P.sky.scale = BAKED_SKY_SCALE;
 }
 
 #endif

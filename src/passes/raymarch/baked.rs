@@ -12,7 +12,7 @@ use super::params::RaymarchParams;
 pub const BAKED_FIRST_ID: u32 = 13;
 
 /// How many values are baked.
-pub const BAKED_COUNT: usize = 69;
+pub const BAKED_COUNT: usize = 71;
 
 /// The GLSL names of the baked values, in `constant_id` order from
 /// `BAKED_FIRST_ID + 1` (tests/layout.rs checks them against baked.glsl).
@@ -86,6 +86,8 @@ pub const BAKED_NAMES: [&str; BAKED_COUNT] = [
     "BAKED_PLANE_AXIS_Y",
     "BAKED_PLANE_AXIS_Z",
     "BAKED_PLANE_HALF_SIZE",
+    "BAKED_HOLE_COUNT",
+    "BAKED_SKY_SCALE",
 ];
 
 /// The baked values of a scene: its parameter block's static part, bit for
@@ -168,6 +170,9 @@ impl Baked {
                 p.plane.axis[1],
                 p.plane.axis[2],
                 p.plane.half_size,
+                // (A count of at most MAX_HOLES: exact as a float.)
+                p.metric.hole_count as f32,
+                p.sky.scale,
             ]
             .map(f32::to_bits),
         )
