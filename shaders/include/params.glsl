@@ -8,6 +8,7 @@
 #define PARAMS_GLSL
 
 #include "bindings.glsl"
+#include "variant.glsl"
 
 #define MAX_HOLES 8
 
@@ -150,6 +151,7 @@ RaymarchParams P;
 
 void read_params() {
     P = params_block.params;
+    P.metric.hole_count = HOLE_COUNT;
     bake_params();
 }
 

@@ -50,5 +50,8 @@ layout(constant_id = 11) const bool RAIN_FORM = false;
 // (kerr/interior.glsl), and each path's azimuth and time run in their
 // ingoing forms through r+.
 layout(constant_id = 12) const bool KERR_INSIDE = false;
+// The number of holes (at most MAX_HOLES): read_params (params.glsl) puts
+// it in the parameters, so the loops over the holes run to a constant.
+layout(constant_id = 13) const uint HOLE_COUNT = 1u;
 
 #endif

@@ -9,10 +9,10 @@ use super::params::RaymarchParams;
 
 /// The first baked constant's id (`BAKED`, then the values in
 /// [`BAKED_NAMES`] order).
-pub const BAKED_FIRST_ID: u32 = 13;
+pub const BAKED_FIRST_ID: u32 = 14;
 
 /// How many values are baked.
-pub const BAKED_COUNT: usize = 71;
+pub const BAKED_COUNT: usize = 70;
 
 /// The GLSL names of the baked values, in `constant_id` order from
 /// `BAKED_FIRST_ID + 1` (tests/layout.rs checks them against baked.glsl).
@@ -86,7 +86,6 @@ pub const BAKED_NAMES: [&str; BAKED_COUNT] = [
     "BAKED_PLANE_AXIS_Y",
     "BAKED_PLANE_AXIS_Z",
     "BAKED_PLANE_HALF_SIZE",
-    "BAKED_HOLE_COUNT",
     "BAKED_SKY_SCALE",
 ];
 
@@ -170,8 +169,6 @@ impl Baked {
                 p.plane.axis[1],
                 p.plane.axis[2],
                 p.plane.half_size,
-                // (A count of at most MAX_HOLES: exact as a float.)
-                p.metric.hole_count as f32,
                 p.sky.scale,
             ]
             .map(f32::to_bits),

@@ -148,7 +148,11 @@ pub struct Variant {
     /// falling frame, azimuth and time in ingoing form (constant 12; never
     /// split).
     pub kerr_inside: bool,
-    /// The scene's static parameters compiled in ([`baked`]; constants 13
+    /// The number of holes (at most MAX_HOLES; constant 13): the loops over
+    /// them run to a constant (the static frame of a metric of several
+    /// holes or none, the straight and summed paths' capture tests).
+    pub holes: u32,
+    /// The scene's static parameters compiled in ([`baked`]; constants 14
     /// on), or read from the parameter block.
     pub baked: Option<Baked>,
 }
@@ -185,6 +189,7 @@ impl Variant {
             projection: scene.camera.projection.gpu_id(),
             rain_form: spacetime.camera_observer(scene).rain.is_some(),
             kerr_inside: spacetime.camera_inside_spinning(scene),
+            holes: spacetime.holes().len().min(crate::scene::MAX_HOLES) as u32,
             baked,
         }
     }
@@ -208,7 +213,7 @@ impl Variant {
 
     /// The GLSL names of [`Variant::constants`], in `constant_id` order
     /// (tests/layout.rs checks them against include/variant.glsl).
-    pub const CONSTANT_NAMES: [&'static str; 13] = [
+    pub const CONSTANT_NAMES: [&'static str; 14] = [
         "DISK_KIND",
         "SKY_KIND",
         "GRID_PLANE",
@@ -222,9 +227,10 @@ impl Variant {
         "PROJECTION",
         "RAIN_FORM",
         "KERR_INSIDE",
+        "HOLE_COUNT",
     ];
 
-    /// Every constant in `constant_id` order: the 13 of
+    /// Every constant in `constant_id` order: the 14 of
     /// [`Variant::CONSTANT_NAMES`], then `BAKED` and the baked values
     /// ([`baked::BAKED_NAMES`]; zeros when not baked).
     pub fn constants(&self) -> Vec<u32> {
@@ -242,6 +248,7 @@ impl Variant {
             self.projection,
             u32::from(self.rain_form),
             u32::from(self.kerr_inside),
+            self.holes,
         ];
         all.push(u32::from(self.baked.is_some()));
         all.extend(self.baked.map_or([0; baked::BAKED_COUNT], |b| b.0));
@@ -250,7 +257,7 @@ impl Variant {
 
     pub fn name(&self) -> String {
         format!(
-            "raymarch{}{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {}, page-thorne {}, projection {}, rain form {}, kerr inside {})",
+            "raymarch{}{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {}, page-thorne {}, projection {}, rain form {}, kerr inside {}, holes {})",
             if self.aov { " aov" } else { "" },
             if self.baked.is_some() { " baked" } else { "" },
             self.path,
@@ -266,7 +273,8 @@ impl Variant {
             self.page_thorne,
             self.projection,
             self.rain_form,
-            self.kerr_inside
+            self.kerr_inside,
+            self.holes
         )
     }
 }
