@@ -12,7 +12,7 @@
 #include "volume.glsl"
 
 // The frame at a ray's origin and a disk point's radius (static_frame.glsl).
-NON_ROTATING_METRIC(false, false)
+NON_ROTATING_METRIC(false)
 
 // Gravity off: the ray is the line x + t d. It ends at the first horizon it
 // enters (the holes still absorb), at the thin disk's plane inside the

@@ -16,7 +16,7 @@
 #include "volume.glsl"
 
 // The frame at a ray's origin and a disk point's radius (static_frame.glsl).
-NON_ROTATING_METRIC(true, true)
+NON_ROTATING_METRIC(true)
 
 // The volumetric slab around one disk-plane crossing of a closed-form path:
 // the angles where |height| < H, from the crossing's radius and the tilt of

@@ -15,14 +15,14 @@ struct StaticFrame {
 };
 
 // The frame at `x` of the hole nearest to it; with `gravity` false only
-// the direction (lapse 1). `one_hole`: a metric of a single hole, the
-// first, without the search (on a CPU driver the search ran for all
-// MAX_HOLES slots in every pixel, and `holes[nearest]` was read from a
-// copy on the stack lane by lane).
-StaticFrame static_frame_at(vec3 x, bool gravity, bool one_hole) {
+// the direction (lapse 1). The loop runs to HOLE_COUNT, a constant
+// (params.glsl): with a count from the parameter block, a CPU driver ran
+// it over all MAX_HOLES slots in every pixel and read `holes[nearest]`
+// from a copy on the stack lane by lane; with one hole it folds away.
+StaticFrame static_frame_at(vec3 x, bool gravity) {
     uint nearest = 0u;
     float best = 1e30;
-    for (uint k = 0u; k < (one_hole ? 0u : P.metric.hole_count); ++k) {
+    for (uint k = 0u; k < P.metric.hole_count; ++k) {
         float d = length(x - P.metric.holes[k].xyz);
         if (d < best) {
             best = d;
@@ -40,14 +40,14 @@ StaticFrame static_frame_at(vec3 x, bool gravity, bool one_hole) {
 }
 
 // metric_static_frame, metric_disk_radius, metric_gas_g and
-// metric_emitter_lapse2 (metric.glsl) of a metric whose holes do not spin
-// (`one_hole`: it has one, see static_frame_at); `gravity` false: directions only (the gas's shift stays the first hole's
+// metric_emitter_lapse2 (metric.glsl) of a metric whose holes do not spin;
+// `gravity` false: directions only (the gas's shift stays the first hole's
 // Keplerian one, as the thin disk's, and so does the emitter's lapse,
 // 1 - rs / r, which the disk's colour switches split g by). Expanded after
 // disk.glsl.
-#define NON_ROTATING_METRIC(gravity, one_hole) \
+#define NON_ROTATING_METRIC(gravity) \
     StaticFrame metric_static_frame(vec3 origin) { \
-        return static_frame_at(origin, gravity, one_hole); \
+        return static_frame_at(origin, gravity); \
     } \
     float metric_disk_radius(vec3 p) { \
         return length(p - P.metric.holes[0].xyz); \

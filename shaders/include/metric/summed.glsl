@@ -14,7 +14,7 @@
 #include "volume.glsl"
 
 // The frame at a ray's origin and a disk point's radius (static_frame.glsl).
-NON_ROTATING_METRIC(true, false)
+NON_ROTATING_METRIC(true)
 
 // The bending a ray still gets beyond the escape radius, to first order in rs
 // (integrating the perpendicular acceleration 1.5 rs b^3 / r^5 along the

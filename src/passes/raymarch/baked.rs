@@ -217,4 +217,17 @@ mod tests {
         let frame = FrameSpec::new(1, 1);
         assert_ne!(baked(&scene, &frame), baked(&other, &frame));
     }
+
+    /// `HOLE_COUNT` (a constant of every build, which read_params puts in
+    /// place of the block's count) is the count the block carries.
+    #[test]
+    fn the_hole_count_constant_is_the_block_s() {
+        for name in ["default", "binary", "no-gravity", "gargantua"] {
+            let scene = Scene::load(name).unwrap();
+            let spacetime = Spacetime::of(&scene);
+            let block = RaymarchParams::new(&scene, &spacetime, &FrameSpec::new(1, 1));
+            let variant = super::super::Variant::of(&scene, &spacetime, false, false);
+            assert_eq!(variant.holes, block.metric.hole_count, "{name}");
+        }
+    }
 }
