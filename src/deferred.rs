@@ -29,7 +29,7 @@ use glam::DVec3;
 
 use crate::physics::{Disk, Outcome};
 use crate::scene::{DiskKind, Scene};
-use crate::spacetime::{GpuPath, Spacetime};
+use crate::spacetime::{GpuPath, Metric, Spacetime};
 use crate::vk::DeviceInfo;
 
 /// The largest share of the pixels crossing the thin disk at which the split
@@ -75,7 +75,8 @@ pub fn pays(scene: &Scene, spacetime: &Spacetime, width: u32, height: u32) -> bo
     };
     let thin = (scene.disk.kind == DiskKind::Thin).then_some(&disk);
     let frame = scene.camera.frame();
-    let observer = spacetime.camera_observer(scene);
+    let viewer = scene.camera.viewer();
+    let observer = spacetime.camera_observer(&viewer);
     // The share of a grid's rays for which `counts` holds.
     let share = |counts: &dyn Fn(DVec3, DVec3) -> bool| {
         let (cols, rows) = (16u32, 9u32);
@@ -95,10 +96,10 @@ pub fn pays(scene: &Scene, spacetime: &Spacetime, width: u32, height: u32) -> bo
         }
         f64::from(n) / f64::from(cols * rows)
     };
-    match spacetime {
-        Spacetime::Kerr(_) if spacetime.camera_inside_spinning(scene) => false,
-        Spacetime::Kerr(hole) => share(&|x0, d| hole.defers(thin, x0, d)) < MAX_DEFERRED_SHARE,
-        Spacetime::Schwarzschild(_) if thin.is_some() => {
+    match spacetime.metric() {
+        Metric::Kerr(_) if spacetime.camera_inside_spinning(&viewer) => false,
+        Metric::Kerr(hole) => share(&|x0, d| hole.defers(thin, x0, d)) < MAX_DEFERRED_SHARE,
+        Metric::Schwarzschild(_) if thin.is_some() => {
             let on_disk = |x0, d| {
                 let outcome = spacetime.trace(thin, x0, d, &Default::default());
                 matches!(outcome, Outcome::Disk { .. })
@@ -114,7 +115,7 @@ mod tests {
     use super::*;
 
     fn pays_at_720p(scene: &Scene) -> bool {
-        pays(scene, &Spacetime::of(scene), 1280, 720)
+        pays(scene, &scene.spacetime(), 1280, 720)
     }
 
     /// The presets' shares of disk pixels at 1280x720 (the geodesic AOV):

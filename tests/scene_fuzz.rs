@@ -19,11 +19,7 @@ const DEFAULT: &str = include_str!("../src/scene/presets/default.toml");
 /// Every float of the parameter block an accepted scene gives the GPU is
 /// finite (the image size, hole count and step budget are integers).
 fn assert_finite_params(scene: &Scene) {
-    let p = RaymarchParams::new(
-        scene,
-        &blackhole::spacetime::Spacetime::of(scene),
-        &FrameSpec::new(64, 36),
-    );
+    let p = RaymarchParams::new(scene, &scene.spacetime(), &FrameSpec::new(64, 36));
     let integers = [
         offset_of!(RaymarchParams, camera) + offset_of!(CameraParams, size),
         offset_of!(RaymarchParams, camera) + offset_of!(CameraParams, size) + 4,

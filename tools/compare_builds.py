@@ -35,6 +35,10 @@ EXTRA = {
              'observer = "orbiting"\n',
     "fall05": '[[black_hole]]\nspin = 0.5\n[camera]\nposition = [3.0, 5.0, -6.0]\n'
               'observer = "falling"\n',
+    "inside09": '[[black_hole]]\nspin = 0.9\n[camera]\nposition = [0.05, 0.5, -0.05]\n'
+                'look_at = [0.0, -5.0, 1.0]\nobserver = "falling"\n',
+    "inside0": '[camera]\nposition = [0.0, 0.1, -0.5]\nlook_at = [0.0, 0.0, 5.0]\n'
+               'observer = "falling"\n',
     "fisheye": '[camera]\nprojection = "fisheye"\nvfov_deg = 180.0\n',
     "ods": '[camera]\nprojection = "equirect"\nstereo = "ods"\nipd = 0.2\n',
 }

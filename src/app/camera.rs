@@ -6,24 +6,26 @@
 use glam::DVec3;
 
 use crate::scene::Camera;
+use crate::spacetime::Spacetime;
 
 /// Closest the wheel brings the camera to the hole: just outside the photon
 /// sphere (1.5 rs), unless the user asks to go further in. For a spinning
 /// hole the same margin outside its outer (retrograde) circular photon orbit.
 pub const MIN_DISTANCE_RS: f64 = 1.6;
 
-/// The wheel's nearest distance (units of rs) to a hole spinning at `spin`:
-/// 1.6/1.5 of the outer photon orbit (Boyer-Lindquist r, as a distance
-/// sqrt(r^2 + a^2)); inside allowed, 1.01 of the horizon's.
-pub fn min_distance_rs(spin: f64, allow_inside: bool) -> f64 {
-    use crate::spacetime::radii;
-    let a = spin.abs().min(0.9999);
-    // Boyer-Lindquist r (rs) as a distance: sqrt(r^2 + (a* rs / 2)^2).
-    let dist = |r: f64| (r * r + 0.25 * a * a).sqrt();
+/// The wheel's nearest distance (units of rs) to the spacetime's first
+/// hole: 1.6/1.5 of the outer photon orbit's distance from the centre in
+/// the disk's plane ([`Spacetime::equatorial_distance`]); inside allowed,
+/// 1.01 of the horizon's.
+pub fn min_distance_rs(spacetime: &Spacetime, allow_inside: bool) -> f64 {
+    let Some(hole) = spacetime.holes().first() else {
+        return MIN_DISTANCE_RS;
+    };
+    let d = |r: Option<f64>| spacetime.equatorial_distance(r.unwrap_or(hole.rs)) / hole.rs;
     if allow_inside {
-        1.01 * dist(radii::horizon(1.0, a))
+        1.01 * d(Some(spacetime.horizon_radius(hole)))
     } else {
-        MIN_DISTANCE_RS / 1.5 * dist(radii::photon_orbit(1.0, a, false))
+        MIN_DISTANCE_RS / 1.5 * d(spacetime.outer_photon_orbit(hole).or(Some(1.5 * hole.rs)))
     }
 }
 
@@ -91,10 +93,10 @@ impl Orbit {
     }
 
     /// Wheel: `steps` notches, positive zooms in; never closer than
-    /// [`min_distance_rs`] times `rs` to the target (a hole spinning at
-    /// `spin`).
-    pub fn zoom(&mut self, steps: f64, rs: f64, spin: f64) {
-        let min = min_distance_rs(spin, self.allow_inside) * rs;
+    /// [`min_distance_rs`] times the first hole's rs to the target.
+    pub fn zoom(&mut self, steps: f64, spacetime: &Spacetime) {
+        let rs = spacetime.holes().first().map_or(1.0, |h| h.rs);
+        let min = min_distance_rs(spacetime, self.allow_inside) * rs;
         self.distance = (self.distance * 0.9f64.powf(steps)).clamp(min, 1e5 * rs);
     }
 
@@ -158,13 +160,23 @@ mod tests {
         assert!((DVec3::from(p).length() - d0).abs() < 1e-9);
     }
 
+    /// A hole of rs 1 at the origin spinning at `spin`.
+    fn hole(spin: f64) -> Spacetime {
+        let hole = crate::physics::Hole {
+            position: DVec3::ZERO,
+            rs: 1.0,
+        };
+        let body = crate::spacetime::Body { hole, spin };
+        Spacetime::new(&[body], true, DVec3::Y)
+    }
+
     #[test]
     fn the_wheel_stops_outside_the_photon_sphere() {
         let mut o = Orbit::from_camera(&Camera::default());
-        o.zoom(500.0, 1.0, 0.0);
+        o.zoom(500.0, &hole(0.0));
         assert!((o.distance - MIN_DISTANCE_RS).abs() < 1e-12);
         o.allow_inside = true;
-        o.zoom(500.0, 1.0, 0.0);
+        o.zoom(500.0, &hole(0.0));
         assert!(o.distance < 1.5 && o.distance > 1.0);
     }
 
@@ -173,7 +185,7 @@ mod tests {
         // a* = 0.998 (Bardeen 1972): retrograde photon orbit r = 3.9982 M,
         // horizon 1.0632 M; distances sqrt(r^2 + a^2) / 2 in rs.
         let mut o = Orbit::from_camera(&Camera::default());
-        o.zoom(500.0, 1.0, 0.998);
+        o.zoom(500.0, &hole(0.998));
         let outer = 0.5 * (3.9982f64.powi(2) + 0.998f64.powi(2)).sqrt();
         assert!(
             (o.distance - 1.6 / 1.5 * outer).abs() < 1e-3,
@@ -181,7 +193,7 @@ mod tests {
             o.distance
         );
         o.allow_inside = true;
-        o.zoom(500.0, 1.0, -0.998);
+        o.zoom(500.0, &hole(-0.998));
         let horizon = 0.5 * (1.0632f64.powi(2) + 0.998f64.powi(2)).sqrt();
         assert!((o.distance - 1.01 * horizon).abs() < 1e-3, "{}", o.distance);
     }

@@ -14,7 +14,6 @@ use glam::DVec3;
 use super::camera::Orbit;
 use crate::physics::observer::ObserverKind;
 use crate::scene::Scene;
-use crate::spacetime::radii;
 
 /// A fall in progress.
 #[derive(Clone, Copy, Debug)]
@@ -36,14 +35,16 @@ impl WindowFall {
     /// A fall from `orbit`'s camera into the scene's first hole; None
     /// without a hole.
     pub fn start(orbit: &Orbit, scene: &Scene) -> Option<WindowFall> {
-        let target = scene.fall_target_as(ObserverKind::Falling);
         scene.black_holes.first()?;
-        let rel = DVec3::from(orbit.camera().position) - target.centre;
+        let position = DVec3::from(orbit.camera().position);
+        let fall = scene
+            .spacetime()
+            .fall_from(position, ObserverKind::Falling, DVec3::NEG_Z);
         Some(WindowFall {
             before: *orbit,
             began: Instant::now(),
-            r0: rel.length(),
-            line: rel.normalize_or(DVec3::NEG_Z),
+            r0: fall.start(),
+            line: fall.line(),
         })
     }
 
@@ -57,13 +58,16 @@ impl WindowFall {
 
     /// The same `t` seconds into the fall (past `fall_seconds`: its end).
     pub fn orbit_after(&self, orbit: &Orbit, scene: &Scene, t: f64) -> Orbit {
-        let target = scene.fall_target_as(ObserverKind::Falling);
+        // The scene's spacetime now: the panel may change the hole mid-fall.
+        let fall = scene
+            .spacetime()
+            .fall(self.r0, self.line, ObserverKind::Falling);
         let anim = &scene.animation;
-        let end = anim.fall_end(&target, self.line);
-        let r = anim.fall_distance(&target, self.line, self.r0, end, t);
-        let camera = target.centre + r * self.line;
+        let end = fall.end(anim.fall_end_radius);
+        let r = fall.distance_after(anim.fall_fraction(t), end);
+        let camera = fall.centre() + r * self.line;
         let mut o = *orbit;
-        o.distance = LOOK * target.rs;
+        o.distance = LOOK * fall.rs();
         o.target = DVec3::ZERO;
         let offset = DVec3::from(o.camera().position);
         o.target = camera - offset;
@@ -77,20 +81,21 @@ impl WindowFall {
 /// non-rotating hole, the proper time it has left before the singularity,
 /// (2/3) (r / rs)^(3/2) rs / c.
 pub fn camera_status(scene: &Scene) -> String {
-    let target = scene.fall_target();
     if scene.black_holes.is_empty() {
         return "no hole".into();
     }
-    let rel = DVec3::from(scene.camera.position) - target.centre;
-    let r = rel.length() / target.rs;
+    let c = &scene.camera;
+    let fall = scene
+        .spacetime()
+        .fall_from(DVec3::from(c.position), c.observer, DVec3::Y);
+    let r = fall.start() / fall.rs();
     // Inside: Boyer-Lindquist r <= r+ on the camera's line.
-    let horizon = radii::horizon(1.0, target.spin.abs());
-    let inside = target.radius_at(rel.length(), rel.normalize_or(DVec3::Y)) <= horizon;
+    let inside = fall.inside_horizon(fall.start());
     let mut s = format!(
         "r = {r:.4} rs, {} the horizon",
         if inside { "inside" } else { "outside" }
     );
-    if target.interior && target.spin == 0.0 && scene.camera.observer == ObserverKind::Falling {
+    if fall.interior() && fall.spin() == 0.0 {
         s += &format!(
             "  |  {:.4} rs/c of proper time to the singularity",
             2.0 / 3.0 * r.powf(1.5)

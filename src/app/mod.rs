@@ -355,12 +355,7 @@ impl ApplicationHandler for App {
                     MouseScrollDelta::LineDelta(_, y) => f64::from(y),
                     MouseScrollDelta::PixelDelta(p) => p.y / 40.0,
                 };
-                let (rs, spin) = r
-                    .scene
-                    .black_holes
-                    .first()
-                    .map_or((1.0, 0.0), |h| (h.rs, h.spin));
-                r.orbit.zoom(steps, rs, spin);
+                r.orbit.zoom(steps, &r.scene.spacetime());
             }
             WindowEvent::KeyboardInput { event, .. } if !consumed && first_press => {
                 match event.logical_key.as_ref() {

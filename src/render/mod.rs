@@ -50,6 +50,18 @@ pub struct Renderer {
     /// Raised (by a signal handler) to stop a many-sample image between its
     /// samples ([`Renderer::stop_when`]).
     stop: Option<&'static std::sync::atomic::AtomicBool>,
+    /// The current scene's spacetime with what it was built from (the
+    /// holes, gravity, the disk's axis): rebuilt only when those change.
+    spacetime: Option<(crate::scene::SpacetimeKey, Arc<Spacetime>)>,
+}
+
+/// What one frame of a scene is drawn with, decided once at its start
+/// ([`Renderer::start_frame`]): the scene's spacetime, held by the
+/// renderer, and the ray march's variant, built from the one parameter
+/// block the frame uploads.
+pub(crate) struct FramePlan {
+    pub spacetime: Arc<Spacetime>,
+    pub variant: raymarch::Variant,
 }
 
 impl Renderer {
@@ -87,6 +99,7 @@ impl Renderer {
             pipelines,
             gpu,
             stop: None,
+            spacetime: None,
         })
     }
 
@@ -117,8 +130,9 @@ impl Renderer {
     /// trace pass and the deferred pass where the device and the frame gain
     /// by it ([`crate::deferred`]), one dispatch otherwise.
     pub fn ray_march_passes(&self, scene: &Scene, width: u32, height: u32) -> Vec<&'static str> {
-        let spacetime = Spacetime::of(scene);
-        let variant = raymarch::Variant::of(scene, &spacetime, false, self.features().bake);
+        let spacetime = scene.spacetime();
+        let block = self.block(scene, &spacetime, raymarch::FrameSpec::new(width, height));
+        let variant = raymarch::Variant::of(scene, &spacetime, &block, self.features().bake);
         raymarch::pass_names(
             variant,
             self.features().splits(scene, &spacetime, width, height),
@@ -204,20 +218,33 @@ impl Renderer {
         Ok(())
     }
 
-    /// Uploads the scene's image sky if it changed (after every frame in
-    /// flight is done with the old one). An unreadable sky is reported here,
-    /// before any frame is built.
+    /// Uploads the scene's image sky and builds its volume if they changed
+    /// (after every frame in flight is done with the old ones), and builds
+    /// the ray march specialised for this scene now rather than while a
+    /// frame records (a new variant takes lavapipe a moment): split and
+    /// whole, as a moving camera may need either. An unreadable sky is
+    /// reported here, before any frame is built. (The window calls it ahead
+    /// of a fall's end; every frame's start does it for its own variant.)
     pub fn prepare_scene(&mut self, scene: &Scene) -> Result<()> {
+        self.prepare_images(scene)?;
+        let spacetime = scene.spacetime();
+        let block = self.block(scene, &spacetime, raymarch::FrameSpec::new(1, 1));
+        let variant = raymarch::Variant::of(scene, &spacetime, &block, self.features().bake);
+        self.prepare_variant(variant)
+    }
+
+    /// The scene's image sky and volume, uploaded or built where they changed.
+    fn prepare_images(&mut self, scene: &Scene) -> Result<()> {
         if self.resources.sky_changes(scene) || self.resources.volume_changes(scene) {
             self.wait_idle()?;
             self.resources.ensure_sky(scene)?;
             self.resources.ensure_volume(scene)?;
         }
-        // The ray march specialised for this scene, built now rather than
-        // while a frame records (a new variant takes lavapipe a moment):
-        // split and whole, as a moving camera may need either.
-        let variant =
-            raymarch::Variant::of(scene, &Spacetime::of(scene), false, self.features().bake);
+        Ok(())
+    }
+
+    /// The pipelines of `variant`, split and whole, built where missing.
+    fn prepare_variant(&mut self, variant: raymarch::Variant) -> Result<()> {
         for split in [true, false] {
             for stage in self.pipelines.raymarch.stages(variant, split) {
                 self.pipelines.raymarch.pipeline(stage)?;
@@ -226,44 +253,61 @@ impl Renderer {
         Ok(())
     }
 
+    /// The scene's spacetime, held across frames: rebuilt only when the
+    /// holes, gravity or the disk's axis change.
+    fn spacetime_of(&mut self, scene: &Scene) -> Arc<Spacetime> {
+        let key = scene.spacetime_key();
+        match &self.spacetime {
+            Some((held, spacetime)) if *held == key => Arc::clone(spacetime),
+            _ => {
+                let spacetime = Arc::new(scene.spacetime());
+                self.spacetime = Some((key, Arc::clone(&spacetime)));
+                spacetime
+            }
+        }
+    }
+
+    /// The parameter block of `scene` for `frame` (its image sky's width
+    /// filled in from the loaded sky).
+    fn block(
+        &self,
+        scene: &Scene,
+        spacetime: &Spacetime,
+        frame: raymarch::FrameSpec,
+    ) -> raymarch::RaymarchParams {
+        let frame = raymarch::FrameSpec {
+            image_sky_width: self.resources.sky.as_ref().map(|(_, sky)| sky.desc.width),
+            ..frame
+        };
+        raymarch::RaymarchParams::new(scene, spacetime, &frame)
+    }
+
     /// The start of every frame, offscreen or in the window: the scene's
-    /// pipelines and images ready ([`Renderer::prepare_scene`]), slot
-    /// `slot` idle (its last frame waited for), the scene's spacetime built
-    /// once and the slot's parameter block written for it.
+    /// images ready, slot `slot` idle (its last frame waited for), the
+    /// scene's spacetime held, one parameter block built and written to the
+    /// slot, and the variant built from it once, its pipelines ready.
     fn start_frame(
         &mut self,
         slot: usize,
         scene: &Scene,
         size: (u32, u32),
         jitter: (f32, f32),
-    ) -> Result<Spacetime> {
-        self.prepare_scene(scene)?;
-        self.slots[slot].wait()?;
-        let spacetime = Spacetime::of(scene);
-        self.write_params(slot, (scene, &spacetime), size, jitter)?;
-        Ok(spacetime)
-    }
-
-    /// Writes slot `slot`'s parameter block for `scene` (the slot is idle).
-    fn write_params(
-        &mut self,
-        slot: usize,
-        (scene, spacetime): (&Scene, &Spacetime),
-        size: (u32, u32),
-        jitter: (f32, f32),
-    ) -> Result<()> {
+    ) -> Result<FramePlan> {
+        self.prepare_images(scene)?;
+        let spacetime = self.spacetime_of(scene);
         let frame = raymarch::FrameSpec {
-            width: size.0,
-            height: size.1,
             jitter,
-            image_sky_width: self.resources.sky.as_ref().map(|(_, sky)| sky.desc.width),
+            ..raymarch::FrameSpec::new(size.0, size.1)
         };
-        let params = raymarch::RaymarchParams::new(scene, spacetime, &frame);
+        let block = self.block(scene, &spacetime, frame);
+        let variant = raymarch::Variant::of(scene, &spacetime, &block, self.features().bake);
+        self.prepare_variant(variant)?;
+        self.slots[slot].wait()?;
         self.slots[slot]
             .params
             .mapped_mut()?
-            .copy_from_slice(bytemuck::bytes_of(&params));
-        Ok(())
+            .copy_from_slice(bytemuck::bytes_of(&block));
+        Ok(FramePlan { spacetime, variant })
     }
 
     /// Makes sure the accumulation image matches `size` (a new one, after
@@ -307,8 +351,8 @@ fn import_mean(
 /// `--spp`, the window) hand it to the recipe.
 struct SceneFrame<'s> {
     scene: &'s Scene,
-    /// The scene's spacetime, built once for the frame.
-    spacetime: &'s Spacetime,
+    /// The frame's spacetime and variant, decided once at its start.
+    plan: &'s FramePlan,
     /// The slot's parameter block, written by the host.
     params: BufferBinding,
     /// The ray march's size.
@@ -327,7 +371,7 @@ fn add_scene_frame<'a>(
 ) -> ImageHandle {
     let SceneFrame {
         scene,
-        spacetime,
+        plan,
         params,
         size,
         output,
@@ -340,7 +384,8 @@ fn add_scene_frame<'a>(
         pipelines,
         HdrSource::RayMarch {
             scene,
-            spacetime,
+            spacetime: &plan.spacetime,
+            variant: &plan.variant,
             params: &params,
             images: &images,
             size,

@@ -10,14 +10,13 @@ use gpu_allocator::MemoryLocation;
 use super::Pipelines;
 use super::resources::SceneResources;
 use super::{
-    Accumulation, HdrSource, PostSettings, Renderer, SceneFrame, add_frame, add_scene_frame,
-    import_mean, slots,
+    Accumulation, FramePlan, HdrSource, PostSettings, Renderer, SceneFrame, add_frame,
+    add_scene_frame, import_mean, slots,
 };
 use crate::frame::{Frame, FrameTimings, OutputKind, Pixels};
 use crate::graph::{Graph, ImageHandle};
 use crate::passes::copy;
 use crate::scene::{DiskKind, Scene};
-use crate::spacetime::Spacetime;
 use crate::vk::{Access, Buffer, BufferBinding, ImageBinding, ImageDesc};
 use crate::{Error, Result};
 
@@ -39,7 +38,7 @@ impl Renderer {
             ));
         }
         let build = std::time::Instant::now();
-        let spacetime = self.start_frame(OFFSCREEN_SLOT, scene, (width, height), (0.0, 0.0))?;
+        let plan = self.start_frame(OFFSCREEN_SLOT, scene, (width, height), (0.0, 0.0))?;
         self.offscreen(
             (width, height),
             kind,
@@ -47,7 +46,7 @@ impl Renderer {
             |g, pipelines, resources, params| {
                 let frame = SceneFrame {
                     scene,
-                    spacetime: &spacetime,
+                    plan: &plan,
                     params,
                     size: (width, height),
                     output: kind,
@@ -123,7 +122,7 @@ impl Renderer {
             let build = std::time::Instant::now();
             let (jx, jy) = crate::camera::jitter(i + 1);
             let jitter = (jx as f32, jy as f32);
-            let spacetime = self.start_frame(OFFSCREEN_SLOT, scene, (width, height), jitter)?;
+            let plan = self.start_frame(OFFSCREEN_SLOT, scene, (width, height), jitter)?;
             let mean = self
                 .mean
                 .as_ref()
@@ -134,7 +133,7 @@ impl Renderer {
                 let params = self.slots[OFFSCREEN_SLOT].params.binding();
                 let sample = Sample {
                     scene,
-                    spacetime: &spacetime,
+                    plan: &plan,
                     size: (width, height),
                     mean: mean.clone(),
                     index: i,
@@ -160,7 +159,7 @@ impl Renderer {
                 |g, pipelines, resources, params| {
                     let sample = Sample {
                         scene,
-                        spacetime: &spacetime,
+                        plan: &plan,
                         size: (width, height),
                         mean,
                         index: i,
@@ -294,7 +293,7 @@ impl Renderer {
 /// running mean.
 struct Sample<'s> {
     scene: &'s Scene,
-    spacetime: &'s Spacetime,
+    plan: &'s FramePlan,
     size: (u32, u32),
     /// The accumulation image: description, binding, current state.
     mean: (ImageDesc, ImageBinding, Access),
@@ -313,7 +312,7 @@ impl Sample<'_> {
         let mean = import_mean(g, self.mean);
         let frame = SceneFrame {
             scene: self.scene,
-            spacetime: self.spacetime,
+            plan: self.plan,
             params,
             size: self.size,
             output,

@@ -18,8 +18,11 @@ pub enum HdrSource<'h> {
     /// fraction of it in the window).
     RayMarch {
         scene: &'h Scene,
-        /// The scene's spacetime, built once for the frame.
+        /// The scene's spacetime, held by the renderer.
         spacetime: &'h Spacetime,
+        /// The ray march's variant for the frame, built once at its start
+        /// (the AOV's is made from it here).
+        variant: &'h raymarch::Variant,
         params: &'h BufferHandle,
         images: &'h raymarch::SceneImages,
         size: (u32, u32),
@@ -60,6 +63,7 @@ pub fn add_frame<'a>(
         HdrSource::RayMarch {
             scene,
             spacetime,
+            variant,
             params,
             images,
             size,
@@ -75,12 +79,11 @@ pub fn add_frame<'a>(
                     raymarch::RaymarchOutput::Beauty
                 },
                 size,
-                variant: raymarch::Variant::of(
-                    scene,
-                    spacetime,
-                    output == OutputKind::Geodesic,
-                    pipelines.features().bake,
-                ),
+                variant: if output == OutputKind::Geodesic {
+                    variant.for_aov()
+                } else {
+                    *variant
+                },
                 split: pipelines
                     .features()
                     .splits(scene, spacetime, size.0, size.1),

@@ -70,7 +70,7 @@ impl Renderer {
         self.check_size(target.desc.width, target.desc.height)?;
         let slot_index = self.next_slot;
         self.next_slot = (self.next_slot + 1) % self.slots.len();
-        let spacetime = self.start_frame(slot_index, scene, view.render_size, view.jitter)?;
+        let plan = self.start_frame(slot_index, scene, view.render_size, view.jitter)?;
 
         // The running mean follows the render size; a new one starts over.
         let mut sample = view.sample;
@@ -94,7 +94,7 @@ impl Renderer {
         };
         let frame = SceneFrame {
             scene,
-            spacetime: &spacetime,
+            plan: &plan,
             params: self.slots[slot_index].params.binding(),
             size: (w, h),
             output: OutputKind::Ldr,

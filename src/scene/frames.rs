@@ -5,11 +5,8 @@
 
 use std::ops::Range;
 
-use glam::DVec3;
-
 use super::locate::{Seg::Key, display_path};
-use super::{Camera, CameraPath, FallTarget, Scene};
-use crate::physics::observer::ObserverKind;
+use super::{Camera, CameraPath, Scene};
 use crate::{Error, Result};
 
 /// The most frames one `--frames` range may hold: ten million (3.9 days at
@@ -25,36 +22,7 @@ impl Scene {
 
     /// The camera at animation time `t`, seconds.
     pub fn camera_at_time(&self, t: f64) -> Camera {
-        self.animation
-            .camera_at(&self.camera, t, &self.fall_target())
-    }
-
-    /// The hole a fall of the scene's camera heads for: the first.
-    pub fn fall_target(&self) -> FallTarget {
-        self.fall_target_as(self.camera.observer)
-    }
-
-    /// The same for a camera held by `observer`: only a falling one goes
-    /// through the horizon (of one hole with gravity on).
-    pub fn fall_target_as(&self, observer: ObserverKind) -> FallTarget {
-        self.black_holes.first().map_or(
-            FallTarget {
-                centre: DVec3::ZERO,
-                rs: 1.0,
-                spin: 0.0,
-                axis: DVec3::Y,
-                interior: false,
-            },
-            |h| FallTarget {
-                centre: DVec3::from(h.position),
-                rs: h.rs,
-                spin: h.spin,
-                axis: DVec3::from(self.disk.normal).normalize_or(DVec3::Y),
-                interior: observer == ObserverKind::Falling
-                    && self.physics.gravity
-                    && self.black_holes.len() == 1,
-            },
-        )
+        self.animation.camera_at(&self.camera, t, &self.spacetime())
     }
 
     /// Checks the camera of every frame in `range` and, with the shutter
@@ -90,7 +58,7 @@ impl Scene {
             .source
             .as_ref()
             .map_or_else(|| "the scene".to_string(), |p| p.display().to_string());
-        let spacetime = crate::spacetime::Spacetime::of(self);
+        let spacetime = self.spacetime();
         let samples = if a.shutter > 0.0 { spp.max(1) } else { 1 };
         for i in range.start..end {
             for s in 0..samples {

@@ -300,20 +300,4 @@ impl Scene {
         let max_rs = self.black_holes.iter().map(|h| h.rs).fold(0.0, f64::max);
         (2.0 * far.max(self.disk.outer_radius / max_rs)).max(100.0) * max_rs
     }
-
-    /// The holes as the physics module takes them.
-    pub fn physics_holes(&self) -> Vec<crate::physics::Hole> {
-        self.black_holes
-            .iter()
-            .map(|h| crate::physics::Hole {
-                position: DVec3::from(h.position),
-                rs: h.rs,
-            })
-            .collect()
-    }
-
-    /// The camera's observer (the pixel-to-ray mapping and its redshift).
-    pub fn observer(&self) -> crate::physics::observer::Observer {
-        crate::spacetime::Spacetime::of(self).camera_observer(self)
-    }
 }

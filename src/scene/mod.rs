@@ -7,14 +7,17 @@ mod frames;
 pub mod load;
 mod locate;
 mod refusal;
+mod rule;
 pub mod schema;
+mod spacetime;
 mod validate;
 
-pub use animation::{Animation, CameraPath, FallTarget, Keyframe};
+pub use crate::spacetime::FALLING_MIN_R;
+pub use animation::{Animation, CameraPath, Keyframe};
 pub use frames::MAX_SEQUENCE_FRAMES;
 pub use load::{PRESETS, preset_names};
 pub use schema::*;
-pub use validate::FALLING_MIN_R;
+pub use spacetime::SpacetimeKey;
 
 #[cfg(test)]
 mod tests {

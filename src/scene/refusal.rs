@@ -1,11 +1,12 @@
 //! The words of a camera's placement refusals
-//! ([`crate::spacetime::Spacetime::placement`]):
-//! each names the key, the value and what the user can do instead.
+//! ([`crate::spacetime::Spacetime::placement`]) and of a fall's end
+//! ([`crate::spacetime::Fall::check_end`]): each names the key, the value
+//! and what the user can do instead.
 
 use super::Camera;
 use super::locate::Seg::{self, Key};
-use super::validate::{Check, FALLING_MIN_R, fail, vec3};
-use crate::spacetime::Refusal;
+use super::rule::{Check, fail, vec3};
+use crate::spacetime::{EndRefusal, FALLING_MIN_R, Refusal};
 
 /// Why the camera's observer cannot stand where it is
 /// ([`Spacetime::placement`]), worded for the scene's keys.
@@ -96,6 +97,38 @@ pub(super) fn refuse(c: &Camera, at: &[Seg], refusal: Refusal) -> Check {
             &key("observer"),
             name,
             format!("would orbit faster than light there (v = {v:.4} c at r = {r:.4} rs)"),
+        ),
+    }
+}
+
+/// Why a fall cannot end at `end` (`[animation] fall_end_radius`, rs).
+pub(super) fn refuse_fall_end(end: f64, refusal: EndRefusal) -> Check {
+    let key = [Key("animation"), Key("fall_end_radius")];
+    match refusal {
+        EndRefusal::Inside { horizon } => fail(
+            &key,
+            end,
+            format!(
+                "is inside the spinning hole's horizon (r+ = {horizon:.4} rs): only a \
+                 \"falling\" camera (one hole, gravity on) falls through it"
+            ),
+        ),
+        EndRefusal::TooDeep { r, floor, inner } => fail(
+            &key,
+            end,
+            format!(
+                "puts the camera at Boyer-Lindquist r = {r:.6} rs on the line of its fall; a \
+                 falling camera of a spinning hole must stay above r = {floor:.6} rs, just \
+                 outside the inner horizon r- = {inner:.6} rs (docs/inside-the-horizon.md)"
+            ),
+        ),
+        EndRefusal::TooClose => fail(
+            &key,
+            end,
+            format!(
+                "must be at least {FALLING_MIN_R} rs: closer to the singularity the light \
+                 paths lose the accuracy the renderer promises (docs/inside-the-horizon.md)"
+            ),
         ),
     }
 }

@@ -5,28 +5,15 @@ use glam::DVec3;
 
 use super::locate::Seg::{self, Idx, Key};
 use super::locate::display_path;
-use super::refusal::refuse;
+use super::refusal::{refuse, refuse_fall_end};
+use super::rule::{Check, fail, vec3};
 use super::{Camera, CameraPath, DiskKind, MAX_HOLES, Scene, SkyKind, Stereo};
 use crate::physics::observer::ObserverKind;
-use crate::spacetime::{Refusal, Spacetime};
-
-/// A rejected value: its key path, the value as written, and the reason.
-pub type Invalid = (Vec<Seg>, String, String);
-pub(super) type Check = std::result::Result<(), Invalid>;
-
-pub(super) fn fail(path: &[Seg], value: impl std::fmt::Display, why: impl Into<String>) -> Check {
-    Err((
-        path.to_vec(),
-        super::locate::compact_numbers(&value.to_string()),
-        why.into(),
-    ))
-}
+use crate::spacetime::{FALLING_MIN_R, Refusal, Spacetime};
 
 /// Largest magnitude of any number in a scene: the GPU works in 32-bit
 /// floats, and squares of lengths must stay far inside their range.
 pub const LIMIT: f64 = 1e9;
-
-pub use crate::spacetime::FALLING_MIN_R;
 
 /// The frame rates a scene may ask for (`[animation] fps`): MP4, WebM and
 /// MOV through ffmpeg hold these, and a frame's time stays a number.
@@ -47,10 +34,6 @@ impl InRange for f64 {
 /// `ok`, or the failure.
 fn rule(ok: bool, path: &[Seg], value: impl std::fmt::Display, why: impl Into<String>) -> Check {
     if ok { Ok(()) } else { fail(path, value, why) }
-}
-
-pub(super) fn vec3(v: &[f64; 3]) -> String {
-    format!("[{}, {}, {}]", v[0], v[1], v[2])
 }
 
 fn finite3(path: &[Seg], v: &[f64; 3]) -> Check {
@@ -159,7 +142,7 @@ impl Scene {
     /// `[[animation.keyframe]]` (`at` is then its key path) or any frame of
     /// an animation ([`Scene::check_frames`]).
     pub(super) fn check_camera(&self, c: &Camera, at: &[Seg]) -> Check {
-        self.check_camera_in(&Spacetime::of(self), c, at)
+        self.check_camera_in(&self.spacetime(), c, at)
     }
 
     /// [`Scene::check_camera`] in the scene's spacetime, built once by the
@@ -183,7 +166,7 @@ impl Scene {
         // Inside a horizon first, then the eyes, then the observer's own
         // rules.
         let cam = DVec3::from(c.position);
-        let placed = spacetime.placement(c.observer, cam, DVec3::from(self.disk.normal));
+        let placed = spacetime.placement(c.observer, cam);
         if let Err(r @ (Refusal::InsideHorizon { .. } | Refusal::InsideAbsorber { .. })) = placed {
             return refuse(c, at, r);
         }
@@ -205,8 +188,7 @@ impl Scene {
         if c.stereo != Stereo::Ods || !self.physics.gravity {
             return Ok(());
         }
-        let falls_in =
-            c.observer == ObserverKind::Falling && matches!(spacetime, Spacetime::Schwarzschild(_));
+        let falls_in = c.observer == ObserverKind::Falling && spacetime.one_static_hole();
         let least = if falls_in { FALLING_MIN_R } else { 1.01 };
         for (i, h) in self.black_holes.iter().enumerate() {
             let r = (cam - DVec3::from(h.position)).length();
@@ -219,11 +201,10 @@ impl Scene {
             }
         }
         let f = c.frame();
-        let normal = DVec3::from(self.disk.normal);
         for k in 0..64 {
             let t = std::f64::consts::TAU * f64::from(k) / 64.0;
             let eye = cam + 0.5 * c.ipd * (t.cos() * f.right - t.sin() * f.forward);
-            if let Err(refusal) = spacetime.placement(c.observer, eye, normal)
+            if let Err(refusal) = spacetime.placement(c.observer, eye)
                 && let Err((_, _, why)) = refuse(c, &[Key("camera")], refusal)
             {
                 let why = format!(
@@ -285,7 +266,7 @@ impl Scene {
         count_in(&key("noise_octaves"), d.noise_octaves, 1, 8)?;
         // The photon orbit of the spacetime's hole (1.5 rs; a spinning
         // hole's prograde one; none with gravity off).
-        let spacetime = Spacetime::of(self);
+        let spacetime = self.spacetime();
         let photon = spacetime
             .holes()
             .first()
@@ -390,6 +371,7 @@ impl Scene {
 
     fn validate_animation(&self) -> Check {
         let a = &self.animation;
+        let spacetime = self.spacetime();
         let key = |k| [Key("animation"), Key(k)];
         // (What the video containers hold, and each frame's time resolvable.)
         rule(
@@ -439,39 +421,11 @@ impl Scene {
         positive(&key("fall_seconds"), a.fall_seconds)?;
         if let Some(end) = a.fall_end_radius {
             positive(&key("fall_end_radius"), end)?;
-            let target = self.fall_target();
-            let horizon = crate::spacetime::radii::horizon(1.0, target.spin.abs());
-            rule(
-                target.spin == 0.0 || target.interior || end > 1.01 * horizon,
-                &key("fall_end_radius"),
-                end,
-                format!(
-                    "is inside the spinning hole's horizon (r+ = {horizon:.4} rs): only a \
-                     \"falling\" camera (one hole, gravity on) falls through it"
-                ),
-            )?;
-            let line = (DVec3::from(self.camera.position) - target.centre).normalize_or(DVec3::Y);
-            let (r, floor) = (target.radius_at(end * target.rs, line), target.floor());
-            rule(
-                !target.interior || target.spin == 0.0 || r > floor,
-                &key("fall_end_radius"),
-                end,
-                format!(
-                    "puts the camera at Boyer-Lindquist r = {r:.6} rs on the line of its fall; a \
-                     falling camera of a spinning hole must stay above r = {floor:.6} rs, just \
-                     outside the inner horizon r- = {:.6} rs (docs/inside-the-horizon.md)",
-                    crate::spacetime::radii::inner_horizon(1.0, target.spin)
-                ),
-            )?;
-            rule(
-                !target.interior || target.spin != 0.0 || end >= FALLING_MIN_R,
-                &key("fall_end_radius"),
-                end,
-                format!(
-                    "must be at least {FALLING_MIN_R} rs: closer to the singularity the light \
-                     paths lose the accuracy the renderer promises (docs/inside-the-horizon.md)"
-                ),
-            )?;
+            let position = DVec3::from(self.camera.position);
+            let fall = spacetime.fall_from(position, self.camera.observer, DVec3::Y);
+            if let Err(refusal) = fall.check_end(end) {
+                return refuse_fall_end(end, refusal);
+            }
         }
         rule(
             a.camera != CameraPath::Keyframes || !a.keyframes.is_empty(),
@@ -479,7 +433,6 @@ impl Scene {
             "\"keyframes\"",
             "needs at least one [[animation.keyframe]]",
         )?;
-        let spacetime = Spacetime::of(self);
         for (i, k) in a.keyframes.iter().enumerate() {
             rule(
                 k.time.in_range() && (i == 0 || k.time > a.keyframes[i - 1].time),

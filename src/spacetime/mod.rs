@@ -1,4 +1,7 @@
-//! The spacetime seam: what a scene's holes do to light, as one closed enum.
+//! The spacetime seam, the one door to a hole's physics: what holes do to
+//! light, built from values (the holes with their spins, gravity on or off,
+//! the disk's axis; `Scene::spacetime` builds it from a scene, and nothing
+//! here knows a scene), its metric one closed enum.
 //! Each variant gives, in f64, the light path from an origin along a
 //! direction ([`Spacetime::trace`]: closed form, integrated or straight),
 //! the observer's frame at any origin ([`Spacetime::observer`]), the
@@ -7,27 +10,56 @@
 //! ([`Spacetime::gpu_path`]). The physics behind each lives in
 //! [`crate::physics`]; the GLSL twins are `shaders/include/metric/*.glsl`.
 //!
-//! The spinning (Kerr) hole is [`Spacetime::Kerr`]: `spacetime/kerr.rs`
+//! The spinning (Kerr) hole is [`Metric::Kerr`]: `spacetime/kerr.rs`
 //! maps the scene's frame to the hole's around the closed form of
 //! [`crate::physics::kerr`]; `shaders/include/metric/kerr.glsl` is its GPU
 //! twin (the same function set as `schwarzschild.glsl`).
 
+pub mod fall;
 pub mod kerr;
 pub mod placement;
 pub mod radii;
 
 use glam::DVec3;
 
+pub use fall::Fall;
 pub use kerr::SpinningHole;
-pub use placement::{FALLING_MIN_R, Refusal};
+pub use placement::{EndRefusal, FALLING_MIN_R, Refusal};
 
 use crate::physics::observer::{Observer, ObserverKind};
 use crate::physics::{Disk, Hole, Outcome, TraceOptions, closed_form, geodesic, redshift};
-use crate::scene::Scene;
 
-/// What the holes of a scene do to light.
+/// One hole as the spacetime takes it: its place and size (rs), and its
+/// signed spin a* (0: non-rotating).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Body {
+    pub hole: Hole,
+    pub spin: f64,
+}
+
+/// Where a camera stands, as the spacetime's questions about it need it:
+/// its place, the observer holding it, and whether it is an ODS pair (each
+/// eye at its own place).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Viewer {
+    pub position: DVec3,
+    pub observer: ObserverKind,
+    pub ods: bool,
+}
+
+/// What a scene's holes do to light: the metric (one closed enum) and the
+/// disk's axis, which sets a spinning hole's axis and an orbit's sense.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Spacetime {
+pub struct Spacetime {
+    metric: Metric,
+    /// The disk's normal as given (not normalised: the observers normalise
+    /// it where they need to).
+    axis: DVec3,
+}
+
+/// The metric of a [`Spacetime`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum Metric {
     /// Gravity off: straight lines (the holes still absorb).
     Flat(Vec<Hole>),
     /// One non-rotating hole: exact light paths in closed form.
@@ -55,37 +87,57 @@ pub enum GpuPath {
 }
 
 impl Spacetime {
-    /// The scene's spacetime.
-    pub fn of(scene: &Scene) -> Self {
-        let holes = scene.physics_holes();
-        match holes.as_slice() {
-            _ if !scene.physics.gravity => Spacetime::Flat(holes),
-            [one] if scene.black_holes[0].spin != 0.0 => Spacetime::Kerr(SpinningHole {
-                hole: *one,
-                spin: scene.black_holes[0].spin,
-                axis: DVec3::from(scene.disk.normal).normalize(),
+    /// The spacetime of `bodies` with `gravity` on or off, the disk's normal
+    /// `axis` (a spinning hole's axis, an orbit's sense). A spinning hole is
+    /// the only one of its scene (validation says so); with gravity off no
+    /// hole spins.
+    pub fn new(bodies: &[Body], gravity: bool, axis: DVec3) -> Self {
+        let holes: Vec<Hole> = bodies.iter().map(|b| b.hole).collect();
+        let metric = match bodies {
+            _ if !gravity => Metric::Flat(holes),
+            [one] if one.spin != 0.0 => Metric::Kerr(SpinningHole {
+                hole: one.hole,
+                spin: one.spin,
+                axis: axis.normalize(),
             }),
-            [one] => Spacetime::Schwarzschild(*one),
-            _ => Spacetime::Summed(holes),
-        }
+            [one] => Metric::Schwarzschild(one.hole),
+            _ => Metric::Summed(holes),
+        };
+        Spacetime { metric, axis }
+    }
+
+    /// The metric.
+    pub fn metric(&self) -> &Metric {
+        &self.metric
+    }
+
+    /// The disk's normal the spacetime was built with.
+    pub fn axis(&self) -> DVec3 {
+        self.axis
+    }
+
+    /// Whether it is one non-rotating hole (its camera may fall through the
+    /// horizon to [`FALLING_MIN_R`]).
+    pub fn one_static_hole(&self) -> bool {
+        matches!(self.metric, Metric::Schwarzschild(_))
     }
 
     /// The spin a* of the spacetime's hole: a spinning hole's, else 0 (with
     /// gravity off too: then no hole spins, and the disk is a non-rotating
     /// hole's). The GPU block carries it once, in its metric part.
     pub fn spin(&self) -> f64 {
-        match self {
-            Spacetime::Kerr(k) => k.spin,
+        match &self.metric {
+            Metric::Kerr(k) => k.spin,
             _ => 0.0,
         }
     }
 
     /// The holes.
     pub fn holes(&self) -> &[Hole] {
-        match self {
-            Spacetime::Flat(h) | Spacetime::Summed(h) => h,
-            Spacetime::Schwarzschild(h) => std::slice::from_ref(h),
-            Spacetime::Kerr(k) => std::slice::from_ref(&k.hole),
+        match &self.metric {
+            Metric::Flat(h) | Metric::Summed(h) => h,
+            Metric::Schwarzschild(h) => std::slice::from_ref(h),
+            Metric::Kerr(k) => std::slice::from_ref(&k.hole),
         }
     }
 
@@ -96,11 +148,11 @@ impl Spacetime {
 
     /// The path the ray march takes.
     pub fn gpu_path(&self) -> GpuPath {
-        match self {
-            Spacetime::Flat(_) => GpuPath::Straight,
-            Spacetime::Schwarzschild(_) => GpuPath::ClosedForm,
-            Spacetime::Summed(_) => GpuPath::Integrated,
-            Spacetime::Kerr(_) => GpuPath::Kerr,
+        match &self.metric {
+            Metric::Flat(_) => GpuPath::Straight,
+            Metric::Schwarzschild(_) => GpuPath::ClosedForm,
+            Metric::Summed(_) => GpuPath::Integrated,
+            Metric::Kerr(_) => GpuPath::Kerr,
         }
     }
 
@@ -108,21 +160,21 @@ impl Spacetime {
     /// spinning hole, the direction in the ZAMO's frame at `x0`) ends: the
     /// sky (with its final direction), a horizon, or the thin `disk`.
     pub fn trace(&self, disk: Option<&Disk>, x0: DVec3, v0: DVec3, opt: &TraceOptions) -> Outcome {
-        match self {
-            Spacetime::Schwarzschild(hole) => closed_form::trace_closed(hole, disk, x0, v0),
-            Spacetime::Summed(holes) => geodesic::trace(holes, disk, x0, v0, opt).outcome,
-            Spacetime::Flat(holes) => trace_straight(holes, disk, x0, v0),
-            Spacetime::Kerr(k) => k.trace(disk, x0, v0),
+        match &self.metric {
+            Metric::Schwarzschild(hole) => closed_form::trace_closed(hole, disk, x0, v0),
+            Metric::Summed(holes) => geodesic::trace(holes, disk, x0, v0, opt).outcome,
+            Metric::Flat(holes) => trace_straight(holes, disk, x0, v0),
+            Metric::Kerr(k) => k.trace(disk, x0, v0),
         }
     }
 
     /// The observer of `kind` at `position` (any origin): the frame its
-    /// pixel directions are measured in. `disk_normal` sets an orbit's sense.
-    /// Around a spinning hole the frame is the ZAMO's, and the observer's
-    /// velocity is relative to it (zero where it cannot stand: validation
-    /// refuses such cameras).
-    pub fn observer(&self, kind: ObserverKind, position: DVec3, disk_normal: DVec3) -> Observer {
-        if let Spacetime::Kerr(k) = self {
+    /// pixel directions are measured in (an orbit's sense from the disk's
+    /// axis). Around a spinning hole the frame is the ZAMO's, and the
+    /// observer's velocity is relative to it (zero where it cannot stand:
+    /// validation refuses such cameras).
+    pub fn observer(&self, kind: ObserverKind, position: DVec3) -> Observer {
+        if let Metric::Kerr(k) = &self.metric {
             return Observer {
                 kind,
                 rhat: DVec3::Y,
@@ -131,39 +183,34 @@ impl Spacetime {
                 rain: None,
             };
         }
-        let gravity = !matches!(self, Spacetime::Flat(_));
-        Observer::new(kind, position, self.holes(), disk_normal, gravity)
+        let gravity = !matches!(self.metric, Metric::Flat(_));
+        Observer::new(kind, position, self.holes(), self.axis, gravity)
     }
 
-    /// Whether the scene's camera is a falling camera between a spinning
-    /// hole's horizons, or just outside the outer one (within
+    /// The observer holding a camera (`viewer`'s observer at its place).
+    pub fn camera_observer(&self, viewer: &Viewer) -> Observer {
+        self.observer(viewer.observer, viewer.position)
+    }
+
+    /// Whether a camera is a falling camera between a spinning hole's
+    /// horizons, or just outside the outer one (within
     /// [`crate::physics::kerr::FALLING_FRAME_BAND`] of r+): the ray march's
     /// `KERR_INSIDE` path, its photons from the metric's falling frame.
-    pub fn camera_inside_spinning(&self, scene: &Scene) -> bool {
-        self.camera_inside_radius(scene).is_some()
+    pub fn camera_inside_spinning(&self, viewer: &Viewer) -> bool {
+        self.camera_inside_radius(viewer).is_some()
     }
 
     /// The Boyer-Lindquist r (M) of such a camera; None for every other.
-    pub fn camera_inside_radius(&self, scene: &Scene) -> Option<f64> {
-        let Spacetime::Kerr(k) = self else {
+    pub fn camera_inside_radius(&self, viewer: &Viewer) -> Option<f64> {
+        let Metric::Kerr(k) = &self.metric else {
             return None;
         };
-        let r = k.radius_of(DVec3::from(scene.camera.position));
+        let r = k.radius_of(viewer.position);
         let band = (1.0 + crate::physics::kerr::FALLING_FRAME_BAND) * k.r_plus_m();
         // (ODS eyes each stand at their own r: outside r+ they keep the
         // exterior's frames; inside, validation refuses them.)
-        let ods = scene.camera.stereo == crate::scene::Stereo::Ods && r > k.r_plus_m();
-        (scene.camera.observer == ObserverKind::Falling && r < band && !ods).then_some(r)
-    }
-
-    /// The observer holding the scene's camera (`[camera] observer` at its
-    /// position, an orbit's sense from the disk's normal).
-    pub fn camera_observer(&self, scene: &Scene) -> Observer {
-        self.observer(
-            scene.camera.observer,
-            DVec3::from(scene.camera.position),
-            DVec3::from(scene.disk.normal),
-        )
+        let ods = viewer.ods && r > k.r_plus_m();
+        (viewer.observer == ObserverKind::Falling && r < band && !ods).then_some(r)
     }
 
     /// The redshift g = nu_obs / nu_emit, seen from far away, of light from
@@ -174,7 +221,7 @@ impl Spacetime {
     /// Around a spinning hole: r^(3/4) sqrt(r^(3/2) - 3 r^(1/2) + 2a) /
     /// (r^(3/2) + a - lambda) in units of M (the prograde Keplerian emitter).
     pub fn emitter_g(&self, r: f64, lambda: f64) -> f64 {
-        if let Spacetime::Kerr(k) = self {
+        if let Metric::Kerr(k) = &self.metric {
             let (m, a) = (0.5 * k.hole.rs, k.spin);
             let (r, l) = (r / m, lambda / m);
             let x = r.sqrt();
@@ -186,27 +233,50 @@ impl Spacetime {
 
     /// The horizon's radius around each hole (its `rs`).
     pub fn horizon_radius(&self, hole: &Hole) -> f64 {
-        match self {
-            Spacetime::Kerr(k) => k.horizon(),
+        match &self.metric {
+            Metric::Kerr(k) => k.horizon(),
             _ => hole.rs,
         }
     }
 
     /// The photon orbit's radius around `hole`: 1.5 rs (none with gravity off).
     pub fn photon_orbit(&self, hole: &Hole) -> Option<f64> {
-        match self {
-            Spacetime::Flat(_) => None,
-            Spacetime::Kerr(k) => Some(k.photon_orbit()),
+        match &self.metric {
+            Metric::Flat(_) => None,
+            Metric::Kerr(k) => Some(k.photon_orbit()),
             _ => Some(1.5 * hole.rs),
+        }
+    }
+
+    /// The circular photon orbit farthest out around `hole`: 1.5 rs, or a
+    /// spinning hole's retrograde one (none with gravity off).
+    pub fn outer_photon_orbit(&self, hole: &Hole) -> Option<f64> {
+        match &self.metric {
+            Metric::Flat(_) => None,
+            Metric::Kerr(k) => Some(radii::photon_orbit(k.hole.rs, k.spin, false)),
+            _ => Some(1.5 * hole.rs),
+        }
+    }
+
+    /// The distance from the first hole's centre, in the disk's plane, of
+    /// Boyer-Lindquist radius `r` (scene units): sqrt(r^2 + a^2) around a
+    /// spinning hole, r itself otherwise.
+    pub fn equatorial_distance(&self, r: f64) -> f64 {
+        match &self.metric {
+            Metric::Kerr(k) => {
+                let a = 0.5 * k.spin * k.hole.rs;
+                (r * r + a * a).sqrt()
+            }
+            _ => r,
         }
     }
 
     /// The innermost stable circular orbit around `hole`: 3 rs (none with
     /// gravity off).
     pub fn isco(&self, hole: &Hole) -> Option<f64> {
-        match self {
-            Spacetime::Flat(_) => None,
-            Spacetime::Kerr(k) => Some(k.isco()),
+        match &self.metric {
+            Metric::Flat(_) => None,
+            Metric::Kerr(k) => Some(k.isco()),
             _ => Some(3.0 * hole.rs),
         }
     }
@@ -254,28 +324,45 @@ fn trace_straight(holes: &[Hole], disk: Option<&Disk>, x0: DVec3, v0: DVec3) -> 
 mod tests {
     use super::*;
 
-    fn scene(toml: &str) -> Scene {
-        Scene::from_toml(toml, "t.toml").expect("scene")
+    fn body(x: f64, rs: f64, spin: f64) -> Body {
+        Body {
+            hole: Hole {
+                position: DVec3::new(x, 0.0, 0.0),
+                rs,
+            },
+            spin,
+        }
     }
 
     #[test]
-    fn a_scene_picks_its_spacetime_and_gpu_path() {
-        let one = Spacetime::of(&scene(""));
-        assert!(matches!(one, Spacetime::Schwarzschild(_)));
+    fn the_holes_and_gravity_pick_the_metric_and_gpu_path() {
+        let one = Spacetime::new(&[body(0.0, 1.0, 0.0)], true, DVec3::Y);
+        assert!(one.one_static_hole());
         assert_eq!(one.gpu_path(), GpuPath::ClosedForm);
-        let two = Spacetime::of(&Scene::load("binary").expect("preset"));
+        let two = Spacetime::new(&[body(-5.0, 1.0, 0.0), body(5.0, 1.0, 0.0)], true, DVec3::Y);
         assert_eq!(two.gpu_path(), GpuPath::Integrated);
         assert_eq!(two.holes().len(), 2);
-        let flat = Spacetime::of(&Scene::load("no-gravity").expect("preset"));
+        let flat = Spacetime::new(&[body(0.0, 1.0, 0.0)], false, DVec3::Y);
         assert_eq!(flat.gpu_path(), GpuPath::Straight);
         assert_eq!(flat.isco(&flat.holes()[0]), None);
         assert_eq!(one.isco(&one.holes()[0]), Some(3.0));
         assert_eq!(one.photon_orbit(&one.holes()[0]), Some(1.5));
+        let spinning = Spacetime::new(&[body(0.0, 1.0, 0.5)], true, DVec3::new(0.0, 2.0, 0.0));
+        assert_eq!(spinning.gpu_path(), GpuPath::Kerr);
+        assert_eq!(spinning.spin(), 0.5);
+        // A spinning hole's axis is the disk's, normalised; with gravity off
+        // nothing spins.
+        match spinning.metric() {
+            Metric::Kerr(k) => assert_eq!(k.axis, DVec3::Y),
+            m => panic!("{m:?}"),
+        }
+        let off = Spacetime::new(&[body(0.0, 1.0, 0.5)], false, DVec3::Y);
+        assert_eq!((off.gpu_path(), off.spin()), (GpuPath::Straight, 0.0));
     }
 
     #[test]
     fn straight_rays_hit_what_line_geometry_says() {
-        let flat = Spacetime::of(&scene("[physics]\ngravity = false\n"));
+        let flat = Spacetime::new(&[body(0.0, 1.0, 0.0)], false, DVec3::Y);
         let disk = Disk {
             normal: DVec3::Y,
             inner: 3.0,
@@ -308,7 +395,7 @@ mod tests {
 
     #[test]
     fn the_emitter_redshift_is_the_kepler_formula() {
-        let s = Spacetime::of(&scene(""));
+        let s = Spacetime::new(&[body(0.0, 1.0, 0.0)], true, DVec3::Y);
         // A photon with no angular momentum about the axis: the transverse
         // and gravitational shifts only, sqrt(1 - 1.5 rs / r).
         assert!((s.emitter_g(6.0, 0.0) - 0.75f64.sqrt()).abs() < 1e-15);

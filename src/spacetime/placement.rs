@@ -1,17 +1,14 @@
-//! Where a camera's observer may stand in each spacetime: the one place the
-//! rules live (scene validation asks here and words the refusals). Lengths
-//! in the scene's units (each hole's rs).
+//! Where a camera's observer may stand in each spacetime, and where a fall
+//! may end ([`super::Fall::check_end`]): the one place the rules live
+//! (scene validation asks here and words the refusals). Lengths in the
+//! scene's units (each hole's rs).
 
 use glam::DVec3;
 
-use super::Spacetime;
+use super::{Metric, Spacetime};
 use crate::physics::observer::ObserverKind;
 
-/// The closest a `"falling"` camera may come to the centre of a
-/// non-rotating hole, in rs: it falls through the horizon, and its closed-form
-/// paths hold the accuracy goals down to here (docs/inside-the-horizon.md
-/// says why no closer).
-pub const FALLING_MIN_R: f64 = 0.05;
+pub use crate::physics::FALLING_MIN_R;
 
 /// Why an observer cannot stand where a camera puts it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -49,16 +46,28 @@ pub enum Refusal {
     OrbitTooFast { v: f64, r: f64 },
 }
 
+/// Why a fall cannot end where `[animation] fall_end_radius` puts it
+/// ([`super::Fall::check_end`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum EndRefusal {
+    /// Inside a spinning hole's horizon (`horizon`, rs) for an observer that
+    /// does not go through it.
+    Inside { horizon: f64 },
+    /// A falling camera's fall into a spinning hole ending at
+    /// Boyer-Lindquist `r`, at or below `floor`, just outside the inner
+    /// horizon `inner` (rs).
+    TooDeep { r: f64, floor: f64, inner: f64 },
+    /// A falling camera's fall into a non-rotating hole ending closer to
+    /// the singularity than [`FALLING_MIN_R`].
+    TooClose,
+}
+
 impl Spacetime {
     /// Whether an observer of `kind` may stand at `position` (the disk's
-    /// `disk_normal` sets an orbit's axis), or why not.
-    pub fn placement(
-        &self,
-        kind: ObserverKind,
-        position: DVec3,
-        disk_normal: DVec3,
-    ) -> Result<(), Refusal> {
-        if let Spacetime::Kerr(k) = self {
+    /// axis sets an orbit's), or why not.
+    pub fn placement(&self, kind: ObserverKind, position: DVec3) -> Result<(), Refusal> {
+        let disk_normal = self.axis;
+        if let Metric::Kerr(k) = &self.metric {
             if kind == ObserverKind::Flat {
                 return Err(Refusal::FlatAroundSpin);
             }
@@ -71,12 +80,12 @@ impl Spacetime {
             return k.observer_velocity(kind, position).map(|_| ());
         }
         let mut nearest: Option<(DVec3, f64, f64)> = None;
-        let one = matches!(self, Spacetime::Schwarzschild(_));
+        let one = matches!(self.metric, Metric::Schwarzschild(_));
         for (i, h) in self.holes().iter().enumerate() {
             let rel = position - h.position;
             let r = rel.length();
             if r <= h.rs && !one {
-                let several = matches!(self, Spacetime::Summed(_));
+                let several = matches!(self.metric, Metric::Summed(_));
                 return Err(Refusal::InsideAbsorber { hole: i, several });
             }
             if r <= h.rs && kind != ObserverKind::Falling {

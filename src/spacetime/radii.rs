@@ -16,7 +16,7 @@ pub fn horizon(rs: f64, spin: f64) -> f64 {
 
 /// The inner horizon r- (0 at spin 0).
 pub fn inner_horizon(rs: f64, spin: f64) -> f64 {
-    0.5 * rs * (1.0 - (1.0 - spin * spin).sqrt())
+    0.5 * rs * kerr::r_inner_horizon(spin)
 }
 
 /// The circular photon orbit in the equatorial plane turning with the hole

@@ -181,10 +181,9 @@ mod tests {
     use super::*;
     use crate::passes::raymarch::FrameSpec;
     use crate::scene::Scene;
-    use crate::spacetime::Spacetime;
 
     fn baked(scene: &Scene, frame: &FrameSpec) -> Baked {
-        Baked::of(&RaymarchParams::new(scene, &Spacetime::of(scene), frame))
+        Baked::of(&RaymarchParams::new(scene, &scene.spacetime(), frame))
     }
 
     /// Nothing baked moves with the camera, the frame or the time: a
@@ -224,9 +223,9 @@ mod tests {
     fn the_hole_count_constant_is_the_block_s() {
         for name in ["default", "binary", "no-gravity", "gargantua"] {
             let scene = Scene::load(name).unwrap();
-            let spacetime = Spacetime::of(&scene);
+            let spacetime = scene.spacetime();
             let block = RaymarchParams::new(&scene, &spacetime, &FrameSpec::new(1, 1));
-            let variant = super::super::Variant::of(&scene, &spacetime, false, false);
+            let variant = super::super::Variant::of(&scene, &spacetime, &block, false);
             assert_eq!(variant.holes, block.metric.hole_count, "{name}");
         }
     }

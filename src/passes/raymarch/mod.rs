@@ -158,23 +158,19 @@ pub struct Variant {
 }
 
 impl Variant {
-    /// The variant a scene needs, with its static parameters compiled in
-    /// if `bake` ([`crate::features::Features::bake`]).
-    pub fn of(scene: &Scene, spacetime: &Spacetime, aov: bool, bake: bool) -> Variant {
-        let baked = bake.then(|| {
-            Baked::of(&RaymarchParams::new(
-                scene,
-                spacetime,
-                &FrameSpec::new(1, 1),
-            ))
-        });
+    /// The beauty variant a scene needs (its AOV's: [`Variant::for_aov`]),
+    /// with its static parameters compiled in from `block`, the frame's
+    /// parameter block, if `bake` ([`crate::features::Features::bake`]).
+    pub fn of(scene: &Scene, spacetime: &Spacetime, block: &RaymarchParams, bake: bool) -> Variant {
+        let viewer = scene.camera.viewer();
+        let observer = spacetime.camera_observer(&viewer);
         Variant {
-            aov,
+            aov: false,
             path: spacetime.gpu_path(),
             disk: disk_kind(scene),
             sky: sky_kind(scene),
             plane: scene.plane.enabled,
-            light_delay: scene.animation.light_travel_time && !aov,
+            light_delay: scene.animation.light_travel_time,
             structure: scene.disk.structure > 0.0,
             thin_crossings: if scene.disk.structure > 0.0 || scene.disk.opacity < 1.0 {
                 2
@@ -183,14 +179,24 @@ impl Variant {
             },
             volume_blackbody: scene.disk.color == VolumeColor::Blackbody,
             stage: glsl::STAGE_ALL,
-            observer_moves: spacetime.camera_observer(scene).beta != glam::DVec3::ZERO,
+            observer_moves: observer.beta != glam::DVec3::ZERO,
             page_thorne: scene.disk.temperature_profile
                 == crate::scene::TemperatureProfile::PageThorne,
             projection: scene.camera.projection.gpu_id(),
-            rain_form: spacetime.camera_observer(scene).rain.is_some(),
-            kerr_inside: spacetime.camera_inside_spinning(scene),
+            rain_form: observer.rain.is_some(),
+            kerr_inside: spacetime.camera_inside_spinning(&viewer),
             holes: spacetime.holes().len().min(crate::scene::MAX_HOLES) as u32,
-            baked,
+            baked: bake.then(|| Baked::of(block)),
+        }
+    }
+
+    /// The same variant writing the geodesic AOV (no light delay: the AOV
+    /// records where each path goes, not when).
+    pub fn for_aov(self) -> Variant {
+        Variant {
+            aov: true,
+            light_delay: false,
+            ..self
         }
     }
 

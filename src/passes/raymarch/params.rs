@@ -321,8 +321,9 @@ fn camera(scene: &Scene, frame: &FrameSpec) -> CameraParams {
 }
 
 fn observer(scene: &Scene, spacetime: &Spacetime) -> ObserverParams {
-    let obs = spacetime.camera_observer(scene);
-    let bl_r = spacetime.camera_inside_radius(scene).unwrap_or(0.0);
+    let viewer = scene.camera.viewer();
+    let obs = spacetime.camera_observer(&viewer);
+    let bl_r = spacetime.camera_inside_radius(&viewer).unwrap_or(0.0);
     ObserverParams {
         velocity: v3(obs.beta),
         kind: obs.kind as u32 as f32,
@@ -458,7 +459,7 @@ mod tests {
             scene.black_holes[0].spin = spin;
             scene.disk.temperature_profile = profile;
             let peak = f64::from(
-                RaymarchParams::new(&scene, &Spacetime::of(&scene), &FrameSpec::new(8, 8))
+                RaymarchParams::new(&scene, &scene.spacetime(), &FrameSpec::new(8, 8))
                     .disk
                     .nt_peak,
             );

@@ -34,8 +34,7 @@ impl LocalFrame {
     /// The frame at world point `p` (M units) of a hole of spin a (= a* in
     /// M = 1 units).
     pub fn at(p: DVec3, a: f64) -> LocalFrame {
-        let w = p.length_squared() - a * a;
-        let r = (0.5 * (w + (w * w + 4.0 * a * a * p.y * p.y).sqrt())).sqrt();
+        let r = boyer_lindquist_r(p.length_squared(), p.y, a);
         let theta = (p.y / r).clamp(-1.0, 1.0).acos();
         let phi = (-p.z).atan2(p.x);
         let s = theta.sin();
@@ -62,6 +61,15 @@ impl LocalFrame {
             varpi: (big_a / sigma).sqrt() * s,
         }
     }
+}
+
+/// The Boyer-Lindquist r of a point at squared distance `d2` from the
+/// centre and height `y` along the spin axis (Kerr-Schild's x^2 + y^2 + z^2
+/// = r^2 + a^2 sin^2 theta, y = r cos theta solved for r): the one place
+/// it is written. Any units, as long as `a` is in the same (a = a* M).
+pub fn boyer_lindquist_r(d2: f64, y: f64, a: f64) -> f64 {
+    let w = d2 - a * a;
+    (0.5 * (w + (w * w + 4.0 * a * a * y * y).sqrt())).sqrt()
 }
 
 /// The photon constants of one pixel: what the closed form starts from.
@@ -200,8 +208,13 @@ pub const INNER_MARGIN: f64 = 1e-3;
 /// non-rotating hole's limit (0.05 rs = 0.1 M), so that the rule is
 /// continuous in the spin.
 pub fn falling_floor(a: f64) -> f64 {
-    let r_minus = a * a / r_horizon(a);
-    ((1.0 + INNER_MARGIN) * r_minus).max(2.0 * crate::spacetime::FALLING_MIN_R)
+    ((1.0 + INNER_MARGIN) * r_inner_horizon(a)).max(2.0 * crate::physics::FALLING_MIN_R)
+}
+
+/// The inner horizon r- = a^2 / r+ = 1 - sqrt(1 - a^2) (M units), in the
+/// form that keeps its digits as a vanishes: the one place it is written.
+pub fn r_inner_horizon(a: f64) -> f64 {
+    a * a / r_horizon(a)
 }
 
 /// The outer horizon r+ = 1 + sqrt(1 - a^2) (M units).

@@ -29,8 +29,8 @@ use std::f64::consts::PI;
 use glam::DVec3;
 
 pub use frame::{
-    Constants, FALLING_FRAME_BAND, KerrObserver, LocalFrame, PlacementError, falling_floor,
-    observer_velocity, r_horizon, to_zamo_frame,
+    Constants, FALLING_FRAME_BAND, KerrObserver, LocalFrame, PlacementError, boyer_lindquist_r,
+    falling_floor, observer_velocity, r_horizon, r_inner_horizon, to_zamo_frame,
 };
 use radial::Radial;
 

@@ -6,7 +6,7 @@
 use num_complex::Complex64;
 
 use super::elliptic::{f_sc, k_of, pi_of_xi, pi_sc, rc, sn_cn_dn};
-use super::frame::r_horizon;
+use super::frame::{r_horizon, r_inner_horizon};
 
 /// R(r) = (r^2 + a^2 - a lambda)^2 - Delta (eta + (lambda - a)^2).
 pub fn r_potential(r: f64, a: f64, lambda: f64, eta: f64) -> f64 {
@@ -90,7 +90,7 @@ pub struct Radial {
 impl Radial {
     pub fn new(a: f64, lambda: f64, eta: f64, r_o: f64, s_r: f64) -> Radial {
         let r_plus = r_horizon(a);
-        let r_minus = 1.0 - (1.0 - a * a).sqrt();
+        let r_minus = r_inner_horizon(a);
         let roots = radial_roots(a, lambda, eta);
         let scale = roots.iter().map(|z| z.norm()).fold(1.0, f64::max);
         let real: Vec<bool> = roots.iter().map(|z| z.im.abs() < 1e-9 * scale).collect();

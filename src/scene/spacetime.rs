@@ -1,0 +1,80 @@
+//! The scene's spacetime: [`Scene::spacetime`] builds the one door to the
+//! physics ([`crate::spacetime::Spacetime`]) from the scene's holes, its
+//! gravity switch and its disk's axis, and [`Camera::viewer`] says where a
+//! camera stands in the terms the door's questions take.
+
+use glam::DVec3;
+
+use super::{BlackHole, Camera, Scene, Stereo};
+use crate::physics::Hole;
+use crate::physics::observer::Observer;
+use crate::spacetime::{Body, Spacetime, Viewer};
+
+/// What a scene's spacetime is built from: the holes, gravity, the disk's
+/// normal. The renderer keeps its spacetime while this stays the same.
+pub type SpacetimeKey = (Vec<BlackHole>, bool, [f64; 3]);
+
+impl Scene {
+    /// What the spacetime is built from ([`SpacetimeKey`]).
+    pub fn spacetime_key(&self) -> SpacetimeKey {
+        (
+            self.black_holes.clone(),
+            self.physics.gravity,
+            self.disk.normal,
+        )
+    }
+
+    /// The spacetime of the scene's holes (with their spins), gravity on or
+    /// off, and the disk's normal as its axis.
+    pub fn spacetime(&self) -> Spacetime {
+        let bodies: Vec<Body> = self
+            .black_holes
+            .iter()
+            .map(|h| Body {
+                hole: Hole {
+                    position: DVec3::from(h.position),
+                    rs: h.rs,
+                },
+                spin: h.spin,
+            })
+            .collect();
+        Spacetime::new(&bodies, self.physics.gravity, DVec3::from(self.disk.normal))
+    }
+
+    /// The camera's observer (the pixel-to-ray mapping and its redshift).
+    pub fn observer(&self) -> Observer {
+        self.spacetime().camera_observer(&self.camera.viewer())
+    }
+}
+
+impl Camera {
+    /// Where the camera stands, as the spacetime's questions take it.
+    pub fn viewer(&self) -> Viewer {
+        Viewer {
+            position: DVec3::from(self.position),
+            observer: self.observer,
+            ods: self.stereo == Stereo::Ods,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::scene::Scene;
+    use crate::spacetime::GpuPath;
+
+    #[test]
+    fn a_scene_picks_its_spacetime_and_gpu_path() {
+        let one = Scene::default().spacetime();
+        assert!(one.one_static_hole());
+        assert_eq!(one.gpu_path(), GpuPath::ClosedForm);
+        let two = Scene::load("binary").expect("preset").spacetime();
+        assert_eq!(two.gpu_path(), GpuPath::Integrated);
+        assert_eq!(two.holes().len(), 2);
+        let flat = Scene::load("no-gravity").expect("preset").spacetime();
+        assert_eq!(flat.gpu_path(), GpuPath::Straight);
+        let spinning = Scene::load("gargantua").expect("preset").spacetime();
+        assert_eq!(spinning.gpu_path(), GpuPath::Kerr);
+        assert_eq!(spinning.spin(), 0.998);
+    }
+}
