@@ -75,6 +75,7 @@ fn run() -> Result<(), String> {
     let include_dir = shader_dir.join("include");
     println!("cargo:rerun-if-changed={}", shader_dir.display());
     println!("cargo:rerun-if-changed={}", include_dir.display());
+    println!("cargo:rerun-if-changed=src/passes/raymarch/baked_table.rs");
 
     let mut sources: Vec<PathBuf> = std::fs::read_dir(&shader_dir)
         .map_err(|e| format!("{}: {e}", shader_dir.display()))?
@@ -154,6 +155,40 @@ fn run() -> Result<(), String> {
     }
 }
 
+/// The baked values' table (src/passes/raymarch/baked_table.rs), read here
+/// as (first id, [(GLSL name, the field of `P` it overwrites)]); the crate
+/// reads the same rows with its own `baked_values!`.
+macro_rules! baked_values {
+    (first_id: $first:literal; $($name:ident, $glsl:literal, $rust:expr;)*) => {
+        const BAKED_FIRST_ID: u32 = $first;
+        const BAKED: &[(&str, &str)] = &[$((stringify!($name), $glsl)),*];
+    };
+}
+include!("src/passes/raymarch/baked_table.rs");
+
+/// The name under which shaders/include/baked.glsl includes the text
+/// [`baked_values_glsl`] writes.
+const BAKED_VALUES: &str = "baked_values.glsl";
+
+/// The baked values as GLSL: the switch, one specialisation constant a
+/// row, and `bake_params()`.
+fn baked_values_glsl() -> String {
+    let mut s = format!(
+        "// Written by build.rs from src/passes/raymarch/baked_table.rs.\n\
+         layout(constant_id = {BAKED_FIRST_ID}) const bool BAKED = false;\n"
+    );
+    for (i, (name, _)) in (1u32..).zip(BAKED) {
+        let id = BAKED_FIRST_ID + i;
+        s += &format!("layout(constant_id = {id}) const float {name} = 0.0;\n");
+    }
+    s += "\n// Overwrites the block's copy with the baked values (a no-op unless BAKED).\n";
+    s += "void bake_params() {\n    if (!BAKED) return;\n";
+    for (name, field) in BAKED {
+        s += &format!("    P.{field} = {name};\n");
+    }
+    s + "}\n"
+}
+
 fn compile(
     compiler: &shaderc::Compiler,
     src: &Path,
@@ -174,6 +209,12 @@ fn compile(
     }
     let inc = include_dir.to_owned();
     options.set_include_callback(move |name, _kind, from, _depth| {
+        if name == BAKED_VALUES {
+            return Ok(shaderc::ResolvedInclude {
+                resolved_name: "src/passes/raymarch/baked_table.rs (baked_values.glsl)".into(),
+                content: baked_values_glsl(),
+            });
+        }
         let path = inc.join(name);
         std::fs::read_to_string(&path)
             .map(|content| shaderc::ResolvedInclude {

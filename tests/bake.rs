@@ -2,7 +2,9 @@
 //! render's default, shaders/include/baked.glsl) draw what the same
 //! parameters read from the block draw (`BLACKHOLE_NO_BAKE=1`, the window's
 //! way): every kind of path and disk, a grid plane, a hole off the origin
-//! and a tilted disk (no value that folds to 0 or 1), the geodesic AOV.
+//! and a tilted disk (no value that folds to 0 or 1), the geodesic AOV, and
+//! a panorama sky (its texel size baked from the loaded image: once it was
+//! baked as 0, and every offscreen panorama took its finest mip, aliased).
 //! Fails when a baked value lands in the wrong field (a swapped name, an id
 //! off by one) or the driver folds them into something else.
 
@@ -13,7 +15,7 @@ use common::{assert_clean, path_in, render_command, run, scratch};
 /// Each scene rendered to EXR baked and not: a preset's name (its TOML
 /// empty) or a name and its TOML, and whether the geodesic AOV is compared
 /// instead of the image.
-const SCENES: [(&str, &str, bool); 7] = [
+const SCENES: [(&str, &str, bool); 8] = [
     ("default", "", false),
     ("interstellar", "", false),
     ("gargantua", "", false),
@@ -27,6 +29,11 @@ const SCENES: [(&str, &str, bool); 7] = [
         false,
     ),
     ("binary", "", false),
+    (
+        "panorama",
+        "[sky]\nkind = \"image\"\nimage = \"panorama.png\"\n",
+        false,
+    ),
     (
         "tilted-aov",
         "[[black_hole]]\nposition = [0.7, -0.4, 0.3]\nspin = 0.7\n[disk]\nnormal = [0.2, 1.0, -0.3]\n",
@@ -57,6 +64,15 @@ fn render(
 #[test]
 fn baked_parameters_draw_what_the_parameter_block_draws() {
     let dir = scratch();
+    // A panorama of 8-texel squares, fine enough that every pixel's
+    // footprint takes a coarser mip.
+    let panorama = image::RgbImage::from_fn(2048, 1024, |x, y| {
+        let on = (x / 8 + y / 8) % 2 == 1;
+        image::Rgb([if on { 230 } else { 30 }, (x / 8) as u8, 90])
+    });
+    panorama
+        .save(path_in(&dir, "panorama.png"))
+        .expect("the panorama written");
     for (name, toml, aov) in SCENES {
         let scene = if toml.is_empty() {
             std::path::PathBuf::from(name)

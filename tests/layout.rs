@@ -397,54 +397,119 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
 }
 
 /// `layout(constant_id = N) const TYPE NAME` lines of a GLSL source, as
-/// (N, NAME).
-fn specialization_constants(src: &str) -> Vec<(u32, String)> {
+/// (N, NAME, TYPE).
+fn specialization_constants(src: &str) -> Vec<(u32, String, String)> {
     src.lines()
         .filter_map(|l| l.trim().strip_prefix("layout(constant_id = "))
         .filter_map(|rest| {
             let (id, decl) = rest.split_once(')')?;
-            let name = decl.split_whitespace().nth(2)?;
-            Some((id.trim().parse().ok()?, name.to_string()))
+            let mut words = decl.split_whitespace().skip(1);
+            let (kind, name) = (words.next()?, words.next()?);
+            Some((id.trim().parse().ok()?, name.to_string(), kind.to_string()))
         })
         .collect()
 }
 
-#[test]
-fn specialization_constants_match_the_glsl_ids() {
-    use blackhole::passes::raymarch::{Variant, baked};
-    let baked_names: Vec<&str> = std::iter::once("BAKED")
-        .chain(baked::BAKED_NAMES.iter().copied())
+/// Every specialisation constant of a SPIR-V module that the optimiser
+/// kept: (SpecId, its names, GLSL type: bool, int, uint or float). (A
+/// local `const` copy of a constant is the same id: it has both names.)
+fn spirv_constants(spirv: &[u8]) -> Vec<(u32, Vec<String>, String)> {
+    use std::collections::HashMap;
+    let words: Vec<u32> = spirv
+        .chunks_exact(4)
+        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
         .collect();
-    for (src, first, names) in [
-        (
-            include_str!("../shaders/include/variant.glsl"),
-            0,
-            &Variant::CONSTANT_NAMES[..],
-        ),
-        (
-            include_str!("../shaders/include/baked.glsl"),
-            baked::BAKED_FIRST_ID,
-            &baked_names[..],
-        ),
-        (
-            include_str!("../shaders/composite.comp"),
-            0,
-            &blackhole::passes::composite::Variant::CONSTANT_NAMES[..],
-        ),
-    ] {
-        let glsl = specialization_constants(src);
-        let rust: Vec<(u32, String)> = names
-            .iter()
-            .enumerate()
-            .map(|(i, n)| (first + i as u32, (*n).to_string()))
-            .collect();
-        assert_eq!(glsl, rust);
+    let (mut names, mut spec_ids, mut types) = (HashMap::new(), HashMap::new(), HashMap::new());
+    let mut constants = Vec::new();
+    let mut i = 5;
+    while i < words.len() {
+        let (count, opcode) = ((words[i] >> 16) as usize, words[i] & 0xffff);
+        let ops = &words[i + 1..i + count];
+        match opcode {
+            5 => {
+                let bytes: Vec<u8> = ops[1..].iter().flat_map(|w| w.to_le_bytes()).collect();
+                let s: Vec<u8> = bytes.into_iter().take_while(|&b| b != 0).collect();
+                let name = String::from_utf8_lossy(&s).into_owned();
+                names.entry(ops[0]).or_insert_with(Vec::new).push(name);
+            }
+            // OpDecorate target SpecId (1) value.
+            71 if ops[1] == 1 => drop(spec_ids.insert(ops[0], ops[2])),
+            20 => drop(types.insert(ops[0], "bool")),
+            21 => drop(types.insert(ops[0], if ops[2] == 1 { "int" } else { "uint" })),
+            22 => drop(types.insert(ops[0], "float")),
+            // OpSpecConstantTrue, OpSpecConstantFalse, OpSpecConstant.
+            48..=50 => constants.push((ops[0], ops[1])),
+            _ => {}
+        }
+        i += count.max(1);
     }
-    // The ray march's constants: the variant's, then the baked ones.
-    assert_eq!(
-        baked::BAKED_FIRST_ID as usize,
-        Variant::CONSTANT_NAMES.len()
+    constants
+        .into_iter()
+        .filter_map(|(ty, id)| {
+            let kind = (*types.get(&ty)?).to_string();
+            Some((*spec_ids.get(&id)?, names.get(&id)?.clone(), kind))
+        })
+        .collect()
+}
+
+/// The ray march's constants (the variant's from `Variant::named`, then
+/// `BAKED` and the baked values from their table) and the composite's have
+/// the ids the Rust side sets, their names and kinds as the GLSL declares
+/// them (the baked values floats, `BAKED` a bool), in every SPIR-V module.
+#[test]
+fn specialization_constants_match_every_spirv_module() {
+    use blackhole::passes::raymarch::{VARIANT_CONSTANTS, Variant, baked};
+    let expected = |names: &[&str], src: &str| -> Vec<(u32, String, String)> {
+        let glsl = specialization_constants(src);
+        let rust: Vec<(u32, String)> = (0..).zip(names.iter().map(|n| n.to_string())).collect();
+        let text: Vec<(u32, String)> = glsl.iter().map(|(i, n, _)| (*i, n.clone())).collect();
+        assert_eq!(text, rust, "the GLSL's constant_id lines");
+        glsl
+    };
+    let mut raymarch = expected(
+        &Variant::constant_names(),
+        include_str!("../shaders/include/variant.glsl"),
     );
+    assert_eq!(baked::BAKED_FIRST_ID as usize, VARIANT_CONSTANTS);
+    raymarch.push((baked::BAKED_FIRST_ID, "BAKED".into(), "bool".into()));
+    for (id, name) in (baked::BAKED_FIRST_ID + 1..).zip(baked::BAKED_NAMES) {
+        raymarch.push((id, name.into(), "float".into()));
+    }
+    let composite = expected(
+        &blackhole::passes::composite::Variant::CONSTANT_NAMES,
+        include_str!("../shaders/composite.comp"),
+    );
+    let sets = [
+        (raymarch, raymarch_modules()),
+        (
+            composite,
+            vec![
+                blackhole::shaders::COMPOSITE,
+                blackhole::shaders::COMPOSITE_HDR,
+            ],
+        ),
+    ];
+    for (want, modules) in sets {
+        let mut seen = std::collections::HashSet::new();
+        for module in modules {
+            for (id, names, kind) in spirv_constants(module) {
+                let known = names.iter().find(|n| want.iter().any(|w| &w.1 == *n));
+                let c = (id, known.cloned().unwrap_or_default(), kind);
+                assert!(
+                    want.contains(&c),
+                    "{c:?} ({names:?}) is not one of the Rust side's"
+                );
+                seen.insert(c.1);
+            }
+        }
+        // Each constant is used by some build (none silently dropped).
+        let missing: Vec<&String> = want
+            .iter()
+            .map(|w| &w.1)
+            .filter(|n| !seen.contains(*n))
+            .collect();
+        assert!(missing.is_empty(), "in no module: {missing:?}");
+    }
 }
 
 /// Offsets of a push-constant block in `spirv` against the Rust struct's.

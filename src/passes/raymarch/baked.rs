@@ -7,87 +7,40 @@
 
 use super::params::RaymarchParams;
 
-/// The first baked constant's id (`BAKED`, then the values in
-/// [`BAKED_NAMES`] order).
-pub const BAKED_FIRST_ID: u32 = 14;
+/// The baked values' table (baked_table.rs, which build.rs also reads to
+/// write their GLSL): `BAKED_FIRST_ID` (the switch `BAKED`'s constant id),
+/// `BAKED_NAMES` (the values' GLSL names, in `constant_id` order from
+/// `BAKED_FIRST_ID + 1`), `BAKED_COUNT`, and `values`, each row's field of
+/// a block.
+macro_rules! baked_values {
+    (first_id: $first:literal; $($name:ident, $glsl:literal, $rust:expr;)*) => {
+        /// The switch `BAKED`'s constant id; the values follow it.
+        pub const BAKED_FIRST_ID: u32 = $first;
 
-/// How many values are baked.
-pub const BAKED_COUNT: usize = 70;
+        /// The GLSL names of the baked values, in `constant_id` order from
+        /// `BAKED_FIRST_ID + 1` (tests/layout.rs checks them against every
+        /// SPIR-V module).
+        pub const BAKED_NAMES: [&str; BAKED_COUNT] = [$(stringify!($name)),*];
 
-/// The GLSL names of the baked values, in `constant_id` order from
-/// `BAKED_FIRST_ID + 1` (tests/layout.rs checks them against baked.glsl).
-pub const BAKED_NAMES: [&str; BAKED_COUNT] = [
-    "BAKED_HOLE_X",
-    "BAKED_HOLE_Y",
-    "BAKED_HOLE_Z",
-    "BAKED_RS",
-    "BAKED_GRAVITY",
-    "BAKED_SPIN_HI",
-    "BAKED_SPIN_LO",
-    "BAKED_DISK_NORMAL_X",
-    "BAKED_DISK_NORMAL_Y",
-    "BAKED_DISK_NORMAL_Z",
-    "BAKED_DISK_E1_X",
-    "BAKED_DISK_E1_Y",
-    "BAKED_DISK_E1_Z",
-    "BAKED_DISK_E2_X",
-    "BAKED_DISK_E2_Y",
-    "BAKED_DISK_E2_Z",
-    "BAKED_DISK_STRUCTURE",
-    "BAKED_DISK_INNER",
-    "BAKED_DISK_OUTER",
-    "BAKED_DISK_BRIGHTNESS",
-    "BAKED_DISK_BEAMING",
-    "BAKED_DISK_PEAK_TEMPERATURE",
-    "BAKED_DISK_NT_PEAK",
-    "BAKED_DISK_DOPPLER",
-    "BAKED_DISK_REDSHIFT",
-    "BAKED_DISK_OPACITY",
-    "BAKED_DISK_SPEED",
-    "BAKED_DISK_PROFILE",
-    "BAKED_DISK_PT_ROOTS_X",
-    "BAKED_DISK_PT_ROOTS_Y",
-    "BAKED_DISK_PT_ROOTS_Z",
-    "BAKED_DISK_PT_ROOTS_W",
-    "BAKED_DISK_PT_COEF_X",
-    "BAKED_DISK_PT_COEF_Y",
-    "BAKED_DISK_PT_COEF_Z",
-    "BAKED_DISK_PT_COEF_W",
-    "BAKED_VOLUME_HALF_HEIGHT",
-    "BAKED_VOLUME_FALLOFF_V",
-    "BAKED_VOLUME_FALLOFF_H",
-    "BAKED_VOLUME_NOISE_SCALE",
-    "BAKED_VOLUME_OCTAVES",
-    "BAKED_VOLUME_LIT",
-    "BAKED_VOLUME_BLACKBODY",
-    "BAKED_SKY_BRIGHTNESS",
-    "BAKED_SKY_GALAXY",
-    "BAKED_SKY_ROW0_X",
-    "BAKED_SKY_ROW0_Y",
-    "BAKED_SKY_ROW0_Z",
-    "BAKED_SKY_STAR_FLUX",
-    "BAKED_SKY_ROW1_X",
-    "BAKED_SKY_ROW1_Y",
-    "BAKED_SKY_ROW1_Z",
-    "BAKED_SKY_SHIFT",
-    "BAKED_SKY_ROW2_X",
-    "BAKED_SKY_ROW2_Y",
-    "BAKED_SKY_ROW2_Z",
-    "BAKED_SKY_OTHER",
-    "BAKED_PLANE_POSITION_X",
-    "BAKED_PLANE_POSITION_Y",
-    "BAKED_PLANE_POSITION_Z",
-    "BAKED_PLANE_ENABLED",
-    "BAKED_PLANE_NORMAL_X",
-    "BAKED_PLANE_NORMAL_Y",
-    "BAKED_PLANE_NORMAL_Z",
-    "BAKED_PLANE_SPACING",
-    "BAKED_PLANE_AXIS_X",
-    "BAKED_PLANE_AXIS_Y",
-    "BAKED_PLANE_AXIS_Z",
-    "BAKED_PLANE_HALF_SIZE",
-    "BAKED_SKY_SCALE",
-];
+        /// The GLSL fields of the block's copy `P` they overwrite.
+        pub const BAKED_FIELDS: [&str; BAKED_COUNT] = [$($glsl),*];
+
+        /// How many values are baked.
+        pub const BAKED_COUNT: usize = [$(stringify!($name)),*].len();
+
+        /// Each row's value in `p`.
+        fn values(p: &RaymarchParams) -> [f32; BAKED_COUNT] {
+            [$(field(p, $rust)),*]
+        }
+    };
+}
+
+/// A row's field of `p` (the closure typed by this call).
+fn field(p: &RaymarchParams, get: impl Fn(&RaymarchParams) -> f32) -> f32 {
+    get(p)
+}
+
+include!("baked_table.rs");
 
 /// The baked values of a scene: its parameter block's static part, bit for
 /// bit as the block would carry it.
@@ -98,81 +51,7 @@ impl Baked {
     /// The static part of `p` (a block built for the scene; its camera,
     /// observer and time are not read).
     pub fn of(p: &RaymarchParams) -> Baked {
-        Baked(
-            [
-                p.metric.holes[0][0],
-                p.metric.holes[0][1],
-                p.metric.holes[0][2],
-                p.metric.holes[0][3],
-                p.metric.gravity,
-                p.metric.spin_hi,
-                p.metric.spin_lo,
-                p.disk.normal[0],
-                p.disk.normal[1],
-                p.disk.normal[2],
-                p.disk.e1[0],
-                p.disk.e1[1],
-                p.disk.e1[2],
-                p.disk.e2[0],
-                p.disk.e2[1],
-                p.disk.e2[2],
-                p.disk.structure,
-                p.disk.inner,
-                p.disk.outer,
-                p.disk.brightness,
-                p.disk.beaming,
-                p.disk.peak_temperature,
-                p.disk.nt_peak,
-                p.disk.doppler,
-                p.disk.redshift,
-                p.disk.opacity,
-                p.disk.speed,
-                p.disk.profile,
-                p.disk.pt_roots[0],
-                p.disk.pt_roots[1],
-                p.disk.pt_roots[2],
-                p.disk.pt_roots[3],
-                p.disk.pt_coef[0],
-                p.disk.pt_coef[1],
-                p.disk.pt_coef[2],
-                p.disk.pt_coef[3],
-                p.volume.half_height,
-                p.volume.falloff_v,
-                p.volume.falloff_h,
-                p.volume.noise_scale,
-                p.volume.octaves,
-                p.volume.lit,
-                p.volume.blackbody,
-                p.sky.brightness,
-                p.sky.galaxy,
-                p.sky.row0[0],
-                p.sky.row0[1],
-                p.sky.row0[2],
-                p.sky.star_flux,
-                p.sky.row1[0],
-                p.sky.row1[1],
-                p.sky.row1[2],
-                p.sky.shift,
-                p.sky.row2[0],
-                p.sky.row2[1],
-                p.sky.row2[2],
-                p.sky.other,
-                p.plane.position[0],
-                p.plane.position[1],
-                p.plane.position[2],
-                p.plane.enabled,
-                p.plane.normal[0],
-                p.plane.normal[1],
-                p.plane.normal[2],
-                p.plane.spacing,
-                p.plane.axis[0],
-                p.plane.axis[1],
-                p.plane.axis[2],
-                p.plane.half_size,
-                p.sky.scale,
-            ]
-            .map(f32::to_bits),
-        )
+        Baked(values(p).map(f32::to_bits))
     }
 }
 

@@ -217,73 +217,72 @@ impl Variant {
         }
     }
 
-    /// The GLSL names of [`Variant::constants`], in `constant_id` order
-    /// (tests/layout.rs checks them against include/variant.glsl).
-    pub const CONSTANT_NAMES: [&'static str; 14] = [
-        "DISK_KIND",
-        "SKY_KIND",
-        "GRID_PLANE",
-        "LIGHT_DELAY",
-        "THIN_STRUCTURE",
-        "THIN_CROSSINGS",
-        "VOLUME_BLACKBODY",
-        "SPLIT_STAGE",
-        "OBSERVER_MOVES",
-        "PAGE_THORNE",
-        "PROJECTION",
-        "RAIN_FORM",
-        "KERR_INSIDE",
-        "HOLE_COUNT",
-    ];
+    /// The variant's specialisation constants as (GLSL name, value), in
+    /// `constant_id` order from 0: the one list of them, which the
+    /// pipeline's constants, its name and tests/layout.rs (against
+    /// include/variant.glsl and every SPIR-V module) all read. A new
+    /// constant is a field, its line in [`Variant::of`], a row here and its
+    /// `constant_id` line in variant.glsl.
+    pub fn named(&self) -> [(&'static str, u32); VARIANT_CONSTANTS] {
+        [
+            ("DISK_KIND", self.disk),
+            ("SKY_KIND", self.sky),
+            ("GRID_PLANE", u32::from(self.plane)),
+            ("LIGHT_DELAY", u32::from(self.light_delay)),
+            ("THIN_STRUCTURE", u32::from(self.structure)),
+            ("THIN_CROSSINGS", self.thin_crossings),
+            ("VOLUME_BLACKBODY", u32::from(self.volume_blackbody)),
+            ("SPLIT_STAGE", self.stage),
+            ("OBSERVER_MOVES", u32::from(self.observer_moves)),
+            ("PAGE_THORNE", u32::from(self.page_thorne)),
+            ("PROJECTION", self.projection),
+            ("RAIN_FORM", u32::from(self.rain_form)),
+            ("KERR_INSIDE", u32::from(self.kerr_inside)),
+            ("HOLE_COUNT", self.holes),
+        ]
+    }
 
-    /// Every constant in `constant_id` order: the 14 of
-    /// [`Variant::CONSTANT_NAMES`], then `BAKED` and the baked values
-    /// ([`baked::BAKED_NAMES`]; zeros when not baked).
+    /// The GLSL names of [`Variant::named`], in `constant_id` order.
+    pub fn constant_names() -> [&'static str; VARIANT_CONSTANTS] {
+        let any = Variant::of(
+            &Scene::default(),
+            &Scene::default().spacetime(),
+            &RaymarchParams::default(),
+            false,
+        );
+        any.named().map(|(name, _)| name)
+    }
+
+    /// Every constant in `constant_id` order: [`Variant::named`]'s values,
+    /// then `BAKED` and the baked values ([`baked::BAKED_NAMES`]; zeros
+    /// when not baked).
     pub fn constants(&self) -> Vec<u32> {
-        let mut all = vec![
-            self.disk,
-            self.sky,
-            u32::from(self.plane),
-            u32::from(self.light_delay),
-            u32::from(self.structure),
-            self.thin_crossings,
-            u32::from(self.volume_blackbody),
-            self.stage,
-            u32::from(self.observer_moves),
-            u32::from(self.page_thorne),
-            self.projection,
-            u32::from(self.rain_form),
-            u32::from(self.kerr_inside),
-            self.holes,
-        ];
+        let mut all: Vec<u32> = self.named().iter().map(|&(_, v)| v).collect();
         all.push(u32::from(self.baked.is_some()));
         all.extend(self.baked.map_or([0; baked::BAKED_COUNT], |b| b.0));
         all
     }
 
+    /// The pipeline's name: its build, path and every constant's value.
     pub fn name(&self) -> String {
+        let constants: Vec<String> = self
+            .named()
+            .iter()
+            .map(|(name, v)| format!("{} {v}", name.to_lowercase().replace('_', " ")))
+            .collect();
         format!(
-            "raymarch{}{} ({:?}, disk {}, sky {}, plane {}, light delay {}, structure {}, crossings {}, volume blackbody {}, disk stage {}, observer moves {}, page-thorne {}, projection {}, rain form {}, kerr inside {}, holes {})",
+            "raymarch{}{} ({:?}, {})",
             if self.aov { " aov" } else { "" },
             if self.baked.is_some() { " baked" } else { "" },
             self.path,
-            self.disk,
-            self.sky,
-            self.plane,
-            self.light_delay,
-            self.structure,
-            self.thin_crossings,
-            self.volume_blackbody,
-            self.stage,
-            self.observer_moves,
-            self.page_thorne,
-            self.projection,
-            self.rain_form,
-            self.kerr_inside,
-            self.holes
+            constants.join(", ")
         )
     }
 }
+
+/// How many specialisation constants a [`Variant`] has (ids 0 to 13; the
+/// baked values follow from [`baked::BAKED_FIRST_ID`]).
+pub const VARIANT_CONSTANTS: usize = 14;
 
 /// The parameter block is a read-only storage buffer, not a uniform buffer:
 /// on Mesa's lavapipe (22.3) every dispatch that read a uniform buffer
