@@ -1,9 +1,11 @@
 #version 460
 // Ray march: one invocation per pixel. Each camera ray follows its light
-// path (metric.glsl: closed form for one hole, lightpath.glsl; a straight
-// line with gravity off; else the integrator of geodesic.glsl; one of them
-// per build) until it falls into a horizon, hits the disk or escapes to the
-// sky. Writes linear HDR.
+// path (metric.glsl, one metric per build: a non-rotating hole's closed
+// form, lightpath.glsl; a spinning hole's closed form in Mino time,
+// kerr/, outside, in the ergoregion and between the horizons; a straight
+// line with gravity off; else the integrator of geodesic.glsl for several
+// holes) until it falls into a horizon, hits the disk or escapes to the
+// sky. Writes linear HDR, or the geodesic AOV.
 //
 // On a CPU driver, which runs every branch for every pixel, the work of one
 // hole may be split in two dispatches (SPLIT_STAGE; src/deferred.rs says

@@ -23,7 +23,11 @@
 //       a photon of angular momentum lambda (volume.glsl declares it);
 //   float metric_emitter_lapse2(float r, float rs, float ir)  the square of
 //       a disk emitter's lapse at radius r, its clock against infinity
-//       (disk.glsl declares it: the colour's switches split g by it).
+//       (disk.glsl declares it: the colour's switches split g by it);
+//   kerr_zamo_g (ray_state.glsl)  the g of light from rest at infinity as
+//       the camera's frame sees it before its own Doppler factor, which the
+//       ray march's sky shift reads: a spinning hole's metric_trace sets it
+//       per pixel (1 / E), every other metric leaves it at 1.
 //
 // The disk, the volumetric gas and the sky take what metric_trace returns
 // and know nothing of orbit planes.

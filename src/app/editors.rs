@@ -127,11 +127,11 @@ fn camera_and_holes(ui: &mut Ui, s: &mut Scene) {
             num(ui, "rs", &mut h.rs, 0.01);
             let before = h.spin;
             ui.add(egui::Slider::new(&mut h.spin, -0.9999..=0.9999).text("spin a*"));
+            let (rs, a) = (h.rs, h.spin);
             if i == 0 {
-                follow_isco(inner, h.rs, before, h.spin);
+                follow_isco(inner, rs, before, a);
             }
-            if h.spin != 0.0 {
-                let (rs, a) = (h.rs, h.spin);
+            if a != 0.0 {
                 ui.label(format!(
                     "horizon {:.3} rs; circular photon orbits {:.3} rs (prograde), {:.3} rs \
                      (retrograde); ISCO {:.3} rs (the disk's turning direction)",

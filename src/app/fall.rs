@@ -95,11 +95,8 @@ pub fn camera_status(scene: &Scene) -> String {
         "r = {r:.4} rs, {} the horizon",
         if inside { "inside" } else { "outside" }
     );
-    if fall.interior() && fall.spin() == 0.0 {
-        s += &format!(
-            "  |  {:.4} rs/c of proper time to the singularity",
-            2.0 / 3.0 * r.powf(1.5)
-        );
+    if let Some(tau) = fall.time_to_singularity() {
+        s += &format!("  |  {tau:.4} rs/c of proper time to the singularity");
     }
     s
 }

@@ -274,6 +274,22 @@ impl Gui {
                 }
             });
         });
+        self.view_controls(ui, stats, actions);
+        ui.separator();
+        self.scene_files(ui, applied, actions);
+        if !self.message.is_empty() {
+            ui.label(&self.message);
+        }
+        if let Some(e) = &self.error {
+            ui.colored_label(Color32::from_rgb(255, 90, 90), format!("not applied: {e}"));
+        }
+        ui.separator();
+        editors::scene_editor(ui, &mut self.draft);
+    }
+
+    /// The view's controls: the render scale, how far in the wheel goes,
+    /// the fall in (or the return) and the line of where the camera is.
+    fn view_controls(&mut self, ui: &mut Ui, stats: &Stats, actions: &mut PanelActions) {
         ui.horizontal(|ui| {
             let before = (self.auto_scale, self.scale);
             ui.checkbox(&mut self.auto_scale, "auto scale");
@@ -310,7 +326,10 @@ impl Gui {
             }
             ui.label(&stats.camera);
         });
-        ui.separator();
+    }
+
+    /// The scene's files: a preset, or a scene file loaded or saved.
+    fn scene_files(&mut self, ui: &mut Ui, applied: &Scene, actions: &mut PanelActions) {
         ui.horizontal(|ui| {
             ui.label("preset");
             egui::ComboBox::from_id_salt("preset")
@@ -352,14 +371,6 @@ impl Gui {
                 };
             }
         });
-        if !self.message.is_empty() {
-            ui.label(&self.message);
-        }
-        if let Some(e) = &self.error {
-            ui.colored_label(Color32::from_rgb(255, 90, 90), format!("not applied: {e}"));
-        }
-        ui.separator();
-        editors::scene_editor(ui, &mut self.draft);
     }
 }
 

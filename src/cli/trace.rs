@@ -181,7 +181,7 @@ struct Plot {
 fn plot_of(scene: &Scene, extent: f64) -> Plot {
     let grey = RGBColor(120, 120, 120);
     let orange = RGBColor(230, 120, 0);
-    let spin = scene.black_holes.first().map_or(0.0, |h| h.spin);
+    let (_, spin) = scene.first_hole();
     if spin == 0.0 {
         return Plot {
             caption: "Photon paths around a Schwarzschild hole (b in units of rs)".into(),
@@ -393,8 +393,7 @@ mod tests {
             );
             assert!(pro < 2.598 && retro > 2.598, "{pro} {retro}");
         }
-        let mut scene = Scene::default();
-        scene.black_holes[0].spin = 0.9;
+        let scene = Scene::from_toml("[[black_hole]]\nspin = 0.9\n", "t.toml").expect("scene");
         let svg = render_svg(&scene).expect("SVG");
         assert!(svg.contains("prograde photon orbit") && svg.contains("retrograde photon orbit"));
     }

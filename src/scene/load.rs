@@ -168,10 +168,7 @@ impl Scene {
     /// (3 rs without spin or gravity's spin), in rs.
     fn resolve_isco(&mut self) {
         if self.disk.inner_radius.to_bits() == super::schema::ISCO_MARK {
-            let (rs, spin) = self
-                .black_holes
-                .first()
-                .map_or((1.0, 0.0), |h| (h.rs, h.spin));
+            let (rs, spin) = self.first_hole();
             self.disk.inner_radius = crate::spacetime::radii::isco(rs, spin.clamp(-1.0, 1.0));
         }
     }

@@ -64,7 +64,8 @@ impl Camera {
     }
 }
 
-/// One Schwarzschild hole.
+/// One `[[black_hole]]`: its place, its size rs and its spin a* (0: a
+/// non-rotating hole; a spinning one must be the scene's only hole).
 #[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct BlackHole {

@@ -121,16 +121,17 @@ impl Scene {
             if let Some(m) = h.mass_solar {
                 positive(&key("mass_solar"), m)?;
             }
+            let spin = h.spin;
             rule(
-                h.spin.in_range() && h.spin.abs() <= MAX_SPIN,
+                spin.in_range() && spin.abs() <= MAX_SPIN,
                 &key("spin"),
-                h.spin,
+                spin,
                 format!("must be in [-{MAX_SPIN}, {MAX_SPIN}] (a* = a / M, signed)"),
             )?;
             rule(
-                h.spin == 0.0 || n == 1,
+                spin == 0.0 || n == 1,
                 &key("spin"),
-                h.spin,
+                spin,
                 "a spinning hole must be the only hole: spinning fields do not add up, and no \
                  closed form exists for several",
             )?;
@@ -221,10 +222,7 @@ impl Scene {
     /// The disk's inner radius as a message quotes it: `"isco"` resolves to
     /// a number the user never wrote, so that is said with it.
     fn inner_radius_quoted(&self) -> String {
-        let (rs, spin) = self
-            .black_holes
-            .first()
-            .map_or((1.0, 0.0), |h| (h.rs, h.spin));
+        let (rs, spin) = self.first_hole();
         let isco = crate::spacetime::radii::isco(rs, spin.clamp(-1.0, 1.0));
         if self.disk.inner_radius == isco {
             format!("\"isco\", {isco:.4} rs, the ISCO at spin {spin}")
@@ -272,7 +270,7 @@ impl Scene {
             .first()
             .and_then(|h| spacetime.photon_orbit(h))
             .unwrap_or(0.0);
-        let bound = if spacetime.spin() == 0.0 {
+        let bound = if spacetime.gpu_path() != crate::spacetime::GpuPath::Kerr {
             format!("1.5 rs = {photon}")
         } else {
             format!("the prograde photon orbit, {photon:.4} rs")

@@ -146,6 +146,15 @@ impl Fall {
         (rate(r0) + inner + rate(r1)) * h / 3.0 * (0.5 * self.rs)
     }
 
+    /// For a falling camera of a non-rotating hole, the proper time (rs/c)
+    /// it has left at its start before the singularity: (2/3) (r /
+    /// rs)^(3/2). None for any other fall (a spinning hole's camera meets no
+    /// singularity before r-).
+    pub fn time_to_singularity(&self) -> Option<f64> {
+        let r = self.start / self.rs;
+        (self.interior && self.spin == 0.0).then(|| 2.0 / 3.0 * r.powf(1.5))
+    }
+
     /// The deepest Boyer-Lindquist r (rs) a falling camera may reach.
     pub fn floor(&self) -> f64 {
         if self.spin == 0.0 {

@@ -71,7 +71,7 @@ impl SpinningHole {
     /// that reaches the disk or the sky on any case but 2. (The GPU also
     /// defers a case-2 path that meets the disk on its way into the horizon,
     /// and one within a hair of the shadow's edge, r4 - r3 < r4 / 10; this
-    /// estimate, for [`crate::deferred::pays`], counts them as
+    /// estimate, for the split's policy (src/deferred.rs, `pays`), counts them as
     /// common.)
     pub fn defers(&self, disk: Option<&Disk>, x0: DVec3, d: DVec3) -> bool {
         let ray = self.trace_local(disk, x0, d);

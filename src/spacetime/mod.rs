@@ -73,7 +73,7 @@ pub enum Metric {
 
 /// Which metric the ray march is built with (one file of
 /// `shaders/include/metric/` each, chosen by a define in build.rs; each
-/// defines `metric_trace`; [`crate::shaders::raymarch`] picks the module).
+/// defines `metric_trace`; src/shaders.rs, `raymarch`, picks the module).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum GpuPath {
     /// `metric/flat.glsl` (`METRIC_FLAT`): straight lines.

@@ -134,6 +134,42 @@ bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 no
 #endif
 }
 
+// The volumetric disk along the path: the slabs where it crosses the disk's
+// plane, at phi0 + k pi (the plane's node), each sampled by volume_crossing.
+// True when the gas turned opaque (the hit is then captured).
+bool volume_slabs(LightPath path, vec3 x, float phi0, float tilt, vec3 c, vec3 e1, vec3 e2,
+                  float rs, float lambda, inout Hit hit) {
+    vec3 N = P.disk.normal;
+    // From the crossing behind the camera when the camera is in the
+    // slab (the same for every pixel, so no divergence), else from the
+    // one ahead; four in all. Later slabs are the thin rings of rays
+    // that wind, and every extra one costs the whole SIMD group.
+    bool camera_in_slab = abs(dot(x - c, N)) < 1.5 * P.volume.half_height;
+    float phi = camera_in_slab ? phi0 - PI : (phi0 <= 1e-6 ? phi0 + PI : phi0);
+    // The angles where the path is inside the outer radius (u >= u_lo):
+    // scattered, between the annulus windows' outer ends; plunging,
+    // from the first window on; trapped rays never leave it.
+    vec2 w_in = path.kind == PATH_SCATTERED ? vec2(path.win_a.x, path.win_b.y)
+              : vec2(path.win_a.x, 1e30);
+    vec2 f_in = (w_in - path.w0) / path.rate;
+    vec2 inside = path.kind == PATH_TRAPPED ? vec2(0.0, path.phi_end)
+                : vec2(max(min(f_in.x, f_in.y), 0.0), min(max(f_in.x, f_in.y), path.phi_end));
+    // The test at the end of the body, as in carlson_rf4: a CPU
+    // driver runs the first body for every SIMD group anyway (a slab
+    // past the path's end adds nothing), and a test before the body
+    // would run one body more than the longest lane needs.
+    for (int j = 0; j < VOLUME_CROSSINGS; ++j) {
+        volume_crossing(path, phi, tilt, inside, c, e1, e2, rs, lambda, hit);
+        if (hit.trans < 0.003) {
+            hit.outcome = OUT_CAPTURED;  // opaque: nothing behind shows
+            return true;
+        }
+        phi += PI;
+        if (phi - PI >= inside.y) break;
+    }
+    return false;
+}
+
 // One hole: the path lies in the plane of the hole, the camera and the ray,
 // and its shape u(phi) is known in closed form (lightpath.glsl). Disk
 // crossings are where the orbit plane meets the disk plane (phi_0 + k pi),
@@ -220,33 +256,7 @@ Hit metric_trace(vec3 x, vec3 d) {
                 }
             }
         } else if (volumetric()) {
-            // From the crossing behind the camera when the camera is in the
-            // slab (the same for every pixel, so no divergence), else from the
-            // one ahead; four in all. Later slabs are the thin rings of rays
-            // that wind, and every extra one costs the whole SIMD group.
-            bool camera_in_slab = abs(dot(x - c, N)) < 1.5 * P.volume.half_height;
-            float phi = camera_in_slab ? phi0 - PI : (phi0 <= 1e-6 ? phi0 + PI : phi0);
-            // The angles where the path is inside the outer radius (u >= u_lo):
-            // scattered, between the annulus windows' outer ends; plunging,
-            // from the first window on; trapped rays never leave it.
-            vec2 w_in = path.kind == PATH_SCATTERED ? vec2(path.win_a.x, path.win_b.y)
-                      : vec2(path.win_a.x, 1e30);
-            vec2 f_in = (w_in - path.w0) / path.rate;
-            vec2 inside = path.kind == PATH_TRAPPED ? vec2(0.0, path.phi_end)
-                        : vec2(max(min(f_in.x, f_in.y), 0.0), min(max(f_in.x, f_in.y), path.phi_end));
-            // The test at the end of the body, as in carlson_rf4: a CPU
-            // driver runs the first body for every SIMD group anyway (a slab
-            // past the path's end adds nothing), and a test before the body
-            // would run one body more than the longest lane needs.
-            for (int j = 0; j < VOLUME_CROSSINGS; ++j) {
-                volume_crossing(path, phi, tilt, inside, c, e1, e2, rs, lambda, hit);
-                if (hit.trans < 0.003) {
-                    hit.outcome = OUT_CAPTURED;  // opaque: nothing behind shows
-                    return hit;
-                }
-                phi += PI;
-                if (phi - PI >= inside.y) break;
-            }
+            if (volume_slabs(path, x, phi0, tilt, c, e1, e2, rs, lambda, hit)) return hit;
         }
     }
     if (path.escapes) {

@@ -255,15 +255,14 @@ fn flag(on: bool) -> f32 {
     f32::from(u8::from(on))
 }
 
-/// The Page-Thorne part of the disk's block for the spacetime's spin
+/// The Page-Thorne part of the disk's block for the spacetime's spin `a`
 /// (Newtonian: zeros); its peak, the normaliser, is set with the rest in
 /// `disk`.
-fn page_thorne(scene: &Scene, spacetime: &Spacetime) -> DiskParams {
+fn page_thorne(scene: &Scene, a: f64) -> DiskParams {
     use crate::scene::TemperatureProfile;
     if scene.disk.temperature_profile != TemperatureProfile::PageThorne {
         return DiskParams::default();
     }
-    let a = spacetime.spin();
     let pt = radii::page_thorne(a);
     DiskParams {
         profile: 1.0,
@@ -283,17 +282,20 @@ impl RaymarchParams {
     /// The block for `scene` (at its `time`), whose spacetime is
     /// `spacetime`, and one frame.
     pub fn new(scene: &Scene, spacetime: &Spacetime, frame: &FrameSpec) -> Self {
+        // The spin a*, asked once: the metric's part carries it, the disk's
+        // Page-Thorne constants are its.
+        let spin = spacetime.spin();
         RaymarchParams {
             camera: camera(scene, frame),
             observer: observer(scene, spacetime),
-            metric: metric(spacetime),
+            metric: metric(spacetime, spin),
             integrator: IntegratorParams {
                 tolerance: scene.quality.tolerance as f32,
                 escape_radius: scene.escape_radius() as f32,
                 steps: scene.quality.steps,
                 _pad: 0.0,
             },
-            disk: disk(scene, spacetime),
+            disk: disk(scene, spin),
             volume: volume(scene),
             sky: sky(scene, frame),
             plane: plane(scene),
@@ -335,9 +337,9 @@ fn observer(scene: &Scene, spacetime: &Spacetime) -> ObserverParams {
     }
 }
 
-/// The spacetime's part of the block: its holes, and whether rays bend.
-fn metric(spacetime: &Spacetime) -> MetricParams {
-    let spin = spacetime.spin();
+/// The spacetime's part of the block: its holes, whether rays bend, and
+/// the spin as two f32 halves.
+fn metric(spacetime: &Spacetime, spin: f64) -> MetricParams {
     let spin_hi = spin as f32;
     let mut holes = [[0.0f32; 4]; MAX_HOLES];
     for (slot, h) in holes.iter_mut().zip(spacetime.holes()) {
@@ -353,7 +355,7 @@ fn metric(spacetime: &Spacetime) -> MetricParams {
     }
 }
 
-fn disk(scene: &Scene, spacetime: &Spacetime) -> DiskParams {
+fn disk(scene: &Scene, spin: f64) -> DiskParams {
     let d = &scene.disk;
     let normal = DVec3::from(d.normal);
     let (e1, e2) = crate::physics::geodesic::disk_basis(normal);
@@ -371,7 +373,7 @@ fn disk(scene: &Scene, spacetime: &Spacetime) -> DiskParams {
         peak_temperature: d.temperature_k as f32,
         // The profile's own peak: T / T_peak is 1 at the hottest ring.
         nt_peak: if d.temperature_profile == crate::scene::TemperatureProfile::PageThorne {
-            radii::page_thorne_peak(spacetime.spin()) as f32
+            radii::page_thorne_peak(spin) as f32
         } else {
             nt_profile_at_peak(d.inner_radius) as f32
         },
@@ -379,7 +381,7 @@ fn disk(scene: &Scene, spacetime: &Spacetime) -> DiskParams {
         redshift: flag(scene.physics.gravitational_redshift),
         opacity: d.opacity as f32,
         speed: d.speed as f32,
-        ..page_thorne(scene, spacetime)
+        ..page_thorne(scene, spin)
     }
 }
 
@@ -455,8 +457,8 @@ mod tests {
             (TemperatureProfile::PageThorne, -0.5),
             (TemperatureProfile::Newtonian, 0.0),
         ] {
-            let mut scene = Scene::default();
-            scene.black_holes[0].spin = spin;
+            let toml = format!("[[black_hole]]\nspin = {spin:?}\n");
+            let mut scene = Scene::from_toml(&toml, "t.toml").expect("scene");
             scene.disk.temperature_profile = profile;
             let peak = f64::from(
                 RaymarchParams::new(&scene, &scene.spacetime(), &FrameSpec::new(8, 8))
