@@ -108,8 +108,7 @@ impl Fall {
     /// The distance from the centre (scene units) at which the line reaches
     /// Boyer-Lindquist r (rs): r^2 + a^2 sin^2 theta, cos theta = y / r.
     pub fn distance_at(&self, r: f64) -> f64 {
-        let (a, ny) = (0.5 * self.spin, self.line.dot(self.axis));
-        ((r * r + a * a) / (1.0 + a * a * ny * ny / (r * r))).sqrt() * self.rs
+        distance_of(r, 0.5 * self.spin, self.line.dot(self.axis)) * self.rs
     }
 
     /// The Boyer-Lindquist r (rs) at `distance` (scene units) from the
@@ -236,6 +235,15 @@ impl Fall {
         }
         Ok(())
     }
+}
+
+/// The distance from the centre at which a line from it reaches
+/// Boyer-Lindquist r around a hole of spin parameter `a` (the same units as
+/// r), `ny` the cosine of the line's angle to the spin axis: the one place
+/// a radius becomes a distance (the inverse of
+/// [`kerr::boyer_lindquist_r`]).
+pub(super) fn distance_of(r: f64, a: f64, ny: f64) -> f64 {
+    ((r * r + a * a) / (1.0 + a * a * ny * ny / (r * r))).sqrt()
 }
 
 #[cfg(test)]

@@ -263,10 +263,7 @@ impl Spacetime {
     /// spinning hole, r itself otherwise.
     pub fn equatorial_distance(&self, r: f64) -> f64 {
         match &self.metric {
-            Metric::Kerr(k) => {
-                let a = 0.5 * k.spin * k.hole.rs;
-                (r * r + a * a).sqrt()
-            }
+            Metric::Kerr(k) => fall::distance_of(r, 0.5 * k.spin * k.hole.rs, 0.0),
             _ => r,
         }
     }
