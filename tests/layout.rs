@@ -4,33 +4,41 @@
 
 use std::mem::{offset_of, size_of};
 
-/// Member offsets (by member index) of the struct named `name` in a SPIR-V module.
-fn member_offsets(spirv: &[u8], name: &str) -> Vec<u32> {
+/// A SPIR-V module's instructions after its header: (opcode, operands).
+fn instructions(spirv: &[u8]) -> Vec<(u32, Vec<u32>)> {
     let words: Vec<u32> = spirv
         .chunks_exact(4)
         .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
         .collect();
     assert_eq!(words[0], 0x0723_0203, "SPIR-V magic");
-    let mut ids = Vec::new();
-    let mut offsets: Vec<(u32, u32, u32)> = Vec::new();
+    let mut all = Vec::new();
     let mut i = 5;
     while i < words.len() {
         let (count, opcode) = ((words[i] >> 16) as usize, words[i] & 0xffff);
-        let ops = &words[i + 1..i + count];
+        all.push((opcode, words[i + 1..i + count].to_vec()));
+        i += count.max(1);
+    }
+    all
+}
+
+/// OpName's string: after the target id, nul-terminated UTF-8.
+fn op_name(ops: &[u32]) -> String {
+    let bytes: Vec<u8> = ops[1..].iter().flat_map(|w| w.to_le_bytes()).collect();
+    let s: Vec<u8> = bytes.into_iter().take_while(|&b| b != 0).collect();
+    String::from_utf8_lossy(&s).into_owned()
+}
+
+/// Member offsets (by member index) of the struct named `name` in a SPIR-V module.
+fn member_offsets(spirv: &[u8], name: &str) -> Vec<u32> {
+    let mut ids = Vec::new();
+    let mut offsets: Vec<(u32, u32, u32)> = Vec::new();
+    for (opcode, ops) in instructions(spirv) {
         match opcode {
-            // OpName: target id, then a nul-terminated UTF-8 string.
-            5 => {
-                let bytes: Vec<u8> = ops[1..].iter().flat_map(|w| w.to_le_bytes()).collect();
-                let s: Vec<u8> = bytes.into_iter().take_while(|&b| b != 0).collect();
-                if s == name.as_bytes() {
-                    ids.push(ops[0]);
-                }
-            }
+            5 if op_name(&ops) == name => ids.push(ops[0]),
             // OpMemberDecorate: struct, member, decoration (35 = Offset), value.
             72 if ops[2] == 35 => offsets.push((ops[0], ops[1], ops[3])),
             _ => {}
         }
-        i += count.max(1);
     }
     // A struct used both in a block and as a private variable is two types
     // of one name; the block's is the one with offsets.
@@ -415,23 +423,11 @@ fn specialization_constants(src: &str) -> Vec<(u32, String, String)> {
 /// local `const` copy of a constant is the same id: it has both names.)
 fn spirv_constants(spirv: &[u8]) -> Vec<(u32, Vec<String>, String)> {
     use std::collections::HashMap;
-    let words: Vec<u32> = spirv
-        .chunks_exact(4)
-        .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
-        .collect();
     let (mut names, mut spec_ids, mut types) = (HashMap::new(), HashMap::new(), HashMap::new());
     let mut constants = Vec::new();
-    let mut i = 5;
-    while i < words.len() {
-        let (count, opcode) = ((words[i] >> 16) as usize, words[i] & 0xffff);
-        let ops = &words[i + 1..i + count];
+    for (opcode, ops) in instructions(spirv) {
         match opcode {
-            5 => {
-                let bytes: Vec<u8> = ops[1..].iter().flat_map(|w| w.to_le_bytes()).collect();
-                let s: Vec<u8> = bytes.into_iter().take_while(|&b| b != 0).collect();
-                let name = String::from_utf8_lossy(&s).into_owned();
-                names.entry(ops[0]).or_insert_with(Vec::new).push(name);
-            }
+            5 => names.entry(ops[0]).or_insert_with(Vec::new).push(op_name(&ops)),
             // OpDecorate target SpecId (1) value.
             71 if ops[1] == 1 => drop(spec_ids.insert(ops[0], ops[2])),
             20 => drop(types.insert(ops[0], "bool")),
@@ -441,7 +437,6 @@ fn spirv_constants(spirv: &[u8]) -> Vec<(u32, Vec<String>, String)> {
             48..=50 => constants.push((ops[0], ops[1])),
             _ => {}
         }
-        i += count.max(1);
     }
     constants
         .into_iter()

@@ -433,7 +433,10 @@ fn f_falls_through_the_horizon_and_f_again_returns() {
             let mut child = spawn_window_with(&out, &args);
             let id = window_id(&mut child);
             press(&id, "h");
-            std::thread::sleep(Duration::from_millis(500));
+            // Time for the first frames: with a cold pipeline cache the
+            // spinning hole's ray march alone took lavapipe 2.5 s to build
+            // here (the test once failed with one frame presented).
+            std::thread::sleep(Duration::from_millis(3000));
             for p in presses {
                 press(&id, p);
                 std::thread::sleep(Duration::from_millis(2500));
