@@ -427,7 +427,10 @@ fn spirv_constants(spirv: &[u8]) -> Vec<(u32, Vec<String>, String)> {
     let mut constants = Vec::new();
     for (opcode, ops) in instructions(spirv) {
         match opcode {
-            5 => names.entry(ops[0]).or_insert_with(Vec::new).push(op_name(&ops)),
+            5 => names
+                .entry(ops[0])
+                .or_insert_with(Vec::new)
+                .push(op_name(&ops)),
             // OpDecorate target SpecId (1) value.
             71 if ops[1] == 1 => drop(spec_ids.insert(ops[0], ops[2])),
             20 => drop(types.insert(ops[0], "bool")),
