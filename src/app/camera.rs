@@ -21,11 +21,12 @@ pub fn min_distance_rs(spacetime: &Spacetime, allow_inside: bool) -> f64 {
     let Some(hole) = spacetime.holes().first() else {
         return MIN_DISTANCE_RS;
     };
-    let d = |r: Option<f64>| spacetime.equatorial_distance(r.unwrap_or(hole.rs)) / hole.rs;
+    let d = |r: f64| spacetime.equatorial_distance(r) / hole.rs;
     if allow_inside {
-        1.01 * d(Some(spacetime.horizon_radius(hole)))
+        1.01 * d(spacetime.horizon_radius(hole))
     } else {
-        MIN_DISTANCE_RS / 1.5 * d(spacetime.outer_photon_orbit(hole).or(Some(1.5 * hole.rs)))
+        // (Gravity off: no photon orbit; the wheel stops where it would be.)
+        MIN_DISTANCE_RS / 1.5 * d(spacetime.outer_photon_orbit(hole).unwrap_or(1.5 * hole.rs))
     }
 }
 

@@ -22,9 +22,6 @@ macro_rules! baked_values {
         /// SPIR-V module).
         pub const BAKED_NAMES: [&str; BAKED_COUNT] = [$(stringify!($name)),*];
 
-        /// The GLSL fields of the block's copy `P` they overwrite.
-        pub const BAKED_FIELDS: [&str; BAKED_COUNT] = [$($glsl),*];
-
         /// How many values are baked.
         pub const BAKED_COUNT: usize = [$(stringify!($name)),*].len();
 
