@@ -26,27 +26,35 @@ fn display() -> String {
                     return d;
                 }
             }
-            let d = format!(":{}", 90 + std::process::id() % 9);
+            // Xvfb picks a free display and writes its number (-displayfd):
+            // a fixed number once met another run's Xvfb, which then ended
+            // under this one's tests ("X connection broken").
             // Under `timeout`: nothing ends it with the test process (it is
             // shared by the tests), so it ends itself well after the suite.
-            let child = Command::new("timeout")
+            let mut child = Command::new("timeout")
                 .args([
                     "900",
                     "Xvfb",
-                    d.as_str(),
+                    "-displayfd",
+                    "1",
                     "-screen",
                     "0",
                     "1280x1024x24",
                     "-nolisten",
                     "tcp",
                 ])
-                .stdout(Stdio::null())
+                .stdout(Stdio::piped())
                 .stderr(Stdio::null())
                 .spawn()
                 .expect("Xvfb runs (apt-get install xvfb)");
+            let mut number = String::new();
+            let out = child.stdout.take().expect("Xvfb's stdout");
+            std::io::BufRead::read_line(&mut std::io::BufReader::new(out), &mut number)
+                .expect("Xvfb says its display");
+            assert!(!number.trim().is_empty(), "Xvfb did not start");
+            let d = format!(":{}", number.trim());
             // Left running for the other tests.
             std::mem::forget(child);
-            std::thread::sleep(Duration::from_millis(1500));
             d
         })
         .clone()
