@@ -12,6 +12,7 @@ pub mod disk;
 pub mod geodesic;
 pub mod kerr;
 pub mod observer;
+pub mod polarization;
 pub mod rain;
 pub mod redshift;
 pub mod river;

@@ -21,8 +21,10 @@ pub mod elliptic;
 pub mod frame;
 pub mod interior;
 pub mod mino;
+pub mod polarized;
 pub mod radial;
 pub mod schild;
+pub mod transport;
 
 use std::f64::consts::PI;
 

@@ -270,6 +270,20 @@ impl Radial {
         }
     }
 
+    /// The sign of dr/dtau of the backward ray at Mino time tau: in cases 1
+    /// and 2 r grows with sn^2(X), X = x0 + rate tau, so the sign is that of
+    /// sn cn; in cases 3 and 4 r is monotonic in the signed argument, so it
+    /// is s_r throughout (no turning point outside the horizon).
+    pub fn backward_r_sign(&self, tau: f64) -> f64 {
+        match self.motion {
+            Motion::Real { x0, .. } => {
+                let (sn, cn, _) = sn_cn_dn(x0 + self.rate * tau, self.m);
+                1f64.copysign(sn * cn)
+            }
+            _ => self.s_r,
+        }
+    }
+
     /// I_phi(tau), the integral of a (2 r - a lambda) / Delta over Mino
     /// time: the radial part of the azimuth's change.
     pub fn i_phi(&self, tau: f64) -> f64 {

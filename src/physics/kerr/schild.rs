@@ -26,21 +26,21 @@ use super::{KerrDisk, KerrOutcome, disk_g_of_constants};
 
 /// A number and its gradient in (X, Y, Z).
 #[derive(Clone, Copy, Debug)]
-struct Dual {
-    v: f64,
-    d: DVec3,
+pub(super) struct Dual {
+    pub(super) v: f64,
+    pub(super) d: DVec3,
 }
 
 impl Dual {
-    fn var(v: f64, i: usize) -> Dual {
+    pub(super) fn var(v: f64, i: usize) -> Dual {
         let mut d = DVec3::ZERO;
         d[i] = 1.0;
         Dual { v, d }
     }
-    fn c(v: f64) -> Dual {
+    pub(super) fn c(v: f64) -> Dual {
         Dual { v, d: DVec3::ZERO }
     }
-    fn sqrt(self) -> Dual {
+    pub(super) fn sqrt(self) -> Dual {
         let s = self.v.sqrt();
         Dual {
             v: s,
@@ -105,7 +105,7 @@ fn field(x: DVec3, p: DVec3, a: f64) -> (Dual, Dual, f64) {
 }
 
 /// The backward flow at (X, p): dX/ds = -dH/dp, dp/ds = dH/dX.
-fn backward(x: DVec3, p: DVec3, p_t: f64, a: f64) -> (DVec3, DVec3) {
+pub(super) fn backward(x: DVec3, p: DVec3, p_t: f64, a: f64) -> (DVec3, DVec3) {
     let (f, lp, r) = field(x, p, a);
     let q = -p_t + lp.v;
     // l_s: the gradient of l_s . p in p.
@@ -128,13 +128,13 @@ fn rk4(x: DVec3, p: DVec3, p_t: f64, a: f64, h: f64) -> (DVec3, DVec3) {
 }
 
 /// Boyer-Lindquist r of a Kerr-Schild point.
-fn bl_r(x: DVec3, a: f64) -> f64 {
+pub(super) fn bl_r(x: DVec3, a: f64) -> f64 {
     let w = x.length_squared() - a * a;
     (0.5 * (w + (w * w + 4.0 * a * a * x.z * x.z).sqrt())).sqrt()
 }
 
 /// int a / Delta dr, zero at infinity: Phi - phi_BL.
-fn phi_shift(r: f64, a: f64) -> f64 {
+pub(super) fn phi_shift(r: f64, a: f64) -> f64 {
     if a == 0.0 {
         return 0.0;
     }
@@ -207,6 +207,26 @@ pub fn falling_photon(f: &LocalFrame, d: DVec3, a: f64) -> Photon {
     }
 }
 
+/// The Kerr-Schild point of frame `f` and the map from a covector's
+/// (r, theta, Phi) parts to its Cartesian ones (the inverse of the
+/// Jacobian's transpose).
+pub(super) fn kerr_schild_start(f: &LocalFrame, a: f64) -> (DVec3, glam::DMat3) {
+    let big_phi = f.phi + phi_shift(f.r, a);
+    let (st, ct) = (f.sin_theta, f.cos_theta);
+    let (sp, cp) = big_phi.sin_cos();
+    let x0 = DVec3::new((f.r * cp - a * sp) * st, (f.r * sp + a * cp) * st, f.r * ct);
+    let d_r = DVec3::new(cp * st, sp * st, ct);
+    let d_th = DVec3::new(
+        (f.r * cp - a * sp) * ct,
+        (f.r * sp + a * cp) * ct,
+        -f.r * st,
+    );
+    let d_ph = DVec3::new(-(f.r * sp + a * cp) * st, (f.r * cp - a * sp) * st, 0.0);
+    // p_cart solves J^T p_cart = (p_r, p_theta, p_Phi).
+    let jt = glam::DMat3::from_cols(d_r, d_th, d_ph).transpose();
+    (x0, jt.inverse())
+}
+
 /// Who holds the camera of [`trace_schild`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SchildObserver {
@@ -244,21 +264,8 @@ pub fn trace_schild_as(
     // Ingoing: p_r picks up -p_t 2r / Delta - p_phi a / Delta.
     let p_r = ph.p_r + (2.0 * f.r * energy - a * p_phi) / f.delta;
     let horizon = r_horizon(a);
-    // Position and the Jacobian of (X, Y, Z) in (r, theta, Phi).
-    let big_phi = f.phi + phi_shift(f.r, a);
-    let (st, ct) = (f.sin_theta, f.cos_theta);
-    let (sp, cp) = big_phi.sin_cos();
-    let x0 = DVec3::new((f.r * cp - a * sp) * st, (f.r * sp + a * cp) * st, f.r * ct);
-    let d_r = DVec3::new(cp * st, sp * st, ct);
-    let d_th = DVec3::new(
-        (f.r * cp - a * sp) * ct,
-        (f.r * sp + a * cp) * ct,
-        -f.r * st,
-    );
-    let d_ph = DVec3::new(-(f.r * sp + a * cp) * st, (f.r * cp - a * sp) * st, 0.0);
-    // p_cart solves J^T p_cart = (p_r, p_theta, p_Phi).
-    let jt = glam::DMat3::from_cols(d_r, d_th, d_ph).transpose();
-    let p0 = jt.inverse() * DVec3::new(p_r, p_th, p_phi);
+    let (x0, to_cartesian) = kerr_schild_start(&f, a);
+    let p0 = to_cartesian * DVec3::new(p_r, p_th, p_phi);
     let p_t = -energy;
     let (mut x, mut p) = (x0, p0);
     // Between the horizons the backward ray leaves through one of them: the
