@@ -204,7 +204,9 @@ void main() {
     if (ray.valid) hit = metric_trace(ray.origin, ray.dir);
     hit.g *= observer_g;
 #ifdef GEODESIC_AOV
-    imageStore(out_img, ivec2(px), path_record(hit));
+    // The Stokes AOV (POL_STOKES): I, Q, U, V of a disk hit, zeros elsewhere.
+    vec4 stokes = hit.outcome == OUT_DISK ? pol_stokes(hit.pol, hit.g) : vec4(0.0);
+    imageStore(out_img, ivec2(px), POLARIZATION == POL_STOKES ? stokes : path_record(hit));
 #else
     float pixel_angle = ray.angle;
     // The pixel's footprint on the sky: the change of the final direction

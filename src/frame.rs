@@ -11,6 +11,8 @@ pub enum OutputKind {
     Hdr,
     /// The geodesic AOV (docs/physics.md, "The geodesic AOV"), RGBA32F.
     Geodesic,
+    /// The Stokes AOV (I, Q, U, V of the polarized thin disk), RGBA32F.
+    Stokes,
     /// Linear HDR after bloom and exposure, before the tone map (`--exr-post`).
     HdrPost,
 }
@@ -21,8 +23,14 @@ impl OutputKind {
         match self {
             OutputKind::Ldr => 4,
             OutputKind::Hdr | OutputKind::HdrPost => 8,
-            OutputKind::Geodesic => 16,
+            OutputKind::Geodesic | OutputKind::Stokes => 16,
         }
+    }
+
+    /// One ray per pixel centre, RGBA32F, no post-processing: the geodesic
+    /// and Stokes AOVs.
+    pub fn is_aov(self) -> bool {
+        matches!(self, OutputKind::Geodesic | OutputKind::Stokes)
     }
 }
 
@@ -45,7 +53,7 @@ impl Pixels {
                     .map(|c| half::f16::from_le_bytes([c[0], c[1]]).to_f32())
                     .collect(),
             ),
-            OutputKind::Geodesic => Pixels::Rgba32F(
+            OutputKind::Geodesic | OutputKind::Stokes => Pixels::Rgba32F(
                 bytes
                     .chunks_exact(4)
                     .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]))

@@ -23,6 +23,9 @@ mod golden;
 #[path = "kerr_gpu.rs"]
 mod kerr_gpu;
 #[allow(unused_imports)]
+#[path = "polarization_gpu.rs"]
+mod polarization_gpu;
+#[allow(unused_imports)]
 #[path = "render.rs"]
 mod render;
 #[allow(unused_imports)]
@@ -65,7 +68,7 @@ fn lacks(need: Need, features: &blackhole::features::Features) -> Option<String>
 fn main() -> ExitCode {
     let args = Arguments::from_args();
     let features = common::renderer().features();
-    let tests: [(&str, Need, fn()); 6] = [
+    let tests: [(&str, Need, fn()); 7] = [
         (
             "presets_match_their_golden_images",
             Need::BlessedDevice,
@@ -80,6 +83,11 @@ fn main() -> ExitCode {
             "gpu_kerr_inside_matches_the_f64_closed_form",
             Need::Float64,
             kerr_gpu::gpu_kerr_inside_matches_the_f64_closed_form,
+        ),
+        (
+            "gpu_stokes_matches_the_transported_reference",
+            Need::Float64,
+            polarization_gpu::gpu_stokes_matches_the_transported_reference,
         ),
         (
             "the_spinning_holes_split_draws_what_the_single_dispatch_draws",

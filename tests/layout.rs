@@ -67,6 +67,7 @@ fn raymarch_params_match_the_glsl_block() {
             offset_of!(RaymarchParams, volume),
             offset_of!(RaymarchParams, sky),
             offset_of!(RaymarchParams, plane),
+            offset_of!(RaymarchParams, polarization),
         ],
     );
     raymarch_struct_matches(
@@ -189,10 +190,20 @@ fn raymarch_params_match_the_glsl_block_past_the_metric() {
             offset_of!(PlaneParams, half_size),
         ],
     );
+    raymarch_struct_matches(
+        "PolarizationParams",
+        &[
+            offset_of!(PolarizationParams, field),
+            offset_of!(PolarizationParams, fraction),
+            offset_of!(PolarizationParams, spectral_index),
+            offset_of!(PolarizationParams, emissivity_index),
+            offset_of!(PolarizationParams, _pad),
+        ],
+    );
     // The block ends with its last group (no trailing padding either side).
     assert_eq!(
         size_of::<RaymarchParams>(),
-        offset_of!(RaymarchParams, plane) + size_of::<PlaneParams>()
+        offset_of!(RaymarchParams, polarization) + size_of::<PolarizationParams>()
     );
 }
 
@@ -346,6 +357,9 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
         ("STAGE_ALL", r::STAGE_ALL),
         ("STAGE_TRACE", r::STAGE_TRACE),
         ("STAGE_DEFERRED", r::STAGE_DEFERRED),
+        ("POL_OFF", r::POL_OFF),
+        ("POL_VIEW", r::POL_VIEW),
+        ("POL_STOKES", r::POL_STOKES),
     ] {
         assert_eq!(define(variant, name), f64::from(rust), "{name}");
     }

@@ -15,6 +15,7 @@
 #include "variant.glsl"
 #include "ray_state.glsl"
 #include "metric.glsl"
+#include "polarization.glsl"
 
 // A pixel's ray.
 struct PixelRay {
@@ -171,6 +172,7 @@ PixelRay camera_ray(uvec2 px) {
     if (PROJECTION == PROJ_EQUIRECT) ray = equirect(px);
     else if (PROJECTION == PROJ_FISHEYE) ray = fisheye(px);
     else ray = pinhole(px);
+    pol_dir_observer = ray.dir;
     ray.dir = observer_to_coordinate(ray.origin, ray.dir);
     return ray;
 }

@@ -23,6 +23,8 @@ struct Hit {
                    // disk's crossings; a spinning hole's rarer paths: metric.glsl)
     float delay; // LIGHT_DELAY: the light's travel time from the disk hit to the camera
                  // (scene units, c = 1), for paths that leave the disk's shading to main
+    vec4 pol;     // POLARIZATION: a disk hit's (cos 2 chi, sin 2 chi, I_e, angle defined)
+                  // (polarization.glsl, pol_of)
     bool far_sky; // OUT_OTHER_UNIVERSE whose path reached the other universe's infinity
                   // along dir ([sky] other_universe = "mirror" shows a copy of the sky)
 };
@@ -40,6 +42,7 @@ Hit hit_start(int outcome, vec3 pos, vec3 dir) {
     hit.deferred = false;
     hit.delay = 0.0;
     hit.far_sky = false;
+    hit.pol = vec4(0.0);
     return hit;
 }
 

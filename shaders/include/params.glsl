@@ -124,6 +124,13 @@ struct PlaneParams {
     vec3 axis;      float half_size;     // in-plane axis; half the side of the square
 };
 
+struct PolarizationParams {
+    vec3 field;     float fraction;      // the field on (e_(r), e_(phi), e_(z)), unit; polarized share
+    float spectral_index;                // alpha
+    float emissivity_index;              // n
+    vec2 _pad;
+};
+
 struct RaymarchParams {
     CameraParams camera;
     ObserverParams observer;
@@ -133,6 +140,7 @@ struct RaymarchParams {
     VolumeParams volume;
     SkyParams sky;
     PlaneParams plane;
+    PolarizationParams polarization;
 };
 
 layout(std430, binding = RM_PARAMS) readonly buffer RaymarchParamsBlock {

@@ -53,5 +53,11 @@ layout(constant_id = 12) const bool KERR_INSIDE = false;
 // The number of holes (at most MAX_HOLES): read_params (params.glsl) puts
 // it in the parameters, so the loops over the holes run to a constant.
 layout(constant_id = 13) const uint HOLE_COUNT = 1u;
+// The polarized thin disk (polarization.glsl): off, the polarized view
+// (Stokes I and ticks), or the Stokes AOV (GEODESIC_AOV builds).
+#define POL_OFF 0
+#define POL_VIEW 1
+#define POL_STOKES 2
+layout(constant_id = 14) const int POLARIZATION = POL_OFF;
 
 #endif

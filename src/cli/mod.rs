@@ -31,6 +31,19 @@ pub enum Aov {
     Beauty,
     /// The geodesic AOV (docs/physics.md, "The geodesic AOV").
     Geodesic,
+    /// The Stokes AOV of the polarized thin disk (docs/polarization.md).
+    Stokes,
+}
+
+impl Aov {
+    /// The name `--aov` takes.
+    pub fn name(self) -> &'static str {
+        match self {
+            Aov::Beauty => "beauty",
+            Aov::Geodesic => "geodesic",
+            Aov::Stokes => "stokes",
+        }
+    }
 }
 
 /// What to render and at what size (shared by `render` and `profile`).

@@ -144,9 +144,10 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
         return job.video(range, container);
     }
     let format = FileFormat::from_path(&out)?;
-    if aov == Aov::Geodesic && format != FileFormat::Exr {
+    if aov != Aov::Beauty && format != FileFormat::Exr {
         return Err(Error::Usage(format!(
-            "--aov geodesic writes float data: give an .exr --out, not {}",
+            "--aov {} writes float data: give an .exr --out, not {}",
+            aov.name(),
             out.display()
         )));
     }
@@ -155,10 +156,11 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
             "--exr-post applies to the image (--aov beauty) written as .exr".into(),
         ));
     }
-    if aov == Aov::Geodesic && scene.disk.kind == crate::scene::DiskKind::Volumetric {
-        return Err(Error::Usage(
-            "--aov geodesic needs a thin disk (or none); this scene's disk is volumetric".into(),
-        ));
+    if aov != Aov::Beauty && scene.disk.kind == crate::scene::DiskKind::Volumetric {
+        return Err(Error::Usage(format!(
+            "--aov {} needs a thin disk (or none); this scene's disk is volumetric",
+            aov.name()
+        )));
     }
     // (A still with the shutter open samples frame 0's interval.)
     scene.check_frames(frames.as_ref().unwrap_or(&(0..1)), spp)?;
@@ -166,6 +168,7 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
         Aov::Beauty if exr_post => crate::OutputKind::HdrPost,
         Aov::Beauty => format.output_kind(),
         Aov::Geodesic => crate::OutputKind::Geodesic,
+        Aov::Stokes => crate::OutputKind::Stokes,
     };
     catch_signals(&out);
     let job = Job {

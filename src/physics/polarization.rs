@@ -72,6 +72,24 @@ impl Stokes {
     }
 }
 
+/// A pixel's Stokes parameters and, where its ray ends on the disk, the
+/// emission's sin(theta_B) and k_z (the accuracy goals hold where both are
+/// above 1e-2 in size).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Seen {
+    pub stokes: Stokes,
+    pub sin_b: f64,
+    pub k_z: f64,
+}
+
+impl Seen {
+    /// Where the goals hold: a disk hit with sin(theta_B) and |k_z| above
+    /// 1e-2.
+    pub fn well_defined(&self) -> bool {
+        self.stokes.i > 0.0 && self.sin_b > 1e-2 && self.k_z.abs() > 1e-2
+    }
+}
+
 /// What turns a ZAMO-frame 4-vector into Boyer-Lindquist components at a
 /// point (M = 1): its lapse, frame-drag, cylindrical radius.
 #[derive(Clone, Copy, Debug)]

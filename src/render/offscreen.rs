@@ -32,10 +32,15 @@ impl Renderer {
     ) -> Result<Frame> {
         self.check_size(width, height)?;
         scene.check_image_size(width, height)?;
-        if kind == OutputKind::Geodesic && scene.disk.kind == DiskKind::Volumetric {
-            return Err(Error::Usage(
-                "--aov geodesic describes thin-disk hits; this scene's disk is volumetric".into(),
-            ));
+        if kind.is_aov() && scene.disk.kind == DiskKind::Volumetric {
+            let aov = if kind == OutputKind::Stokes {
+                "stokes"
+            } else {
+                "geodesic"
+            };
+            return Err(Error::Usage(format!(
+                "--aov {aov} describes thin-disk hits; this scene's disk is volumetric"
+            )));
         }
         let build = std::time::Instant::now();
         let plan = self.start_frame(OFFSCREEN_SLOT, scene, (width, height), (0.0, 0.0))?;
@@ -87,7 +92,7 @@ impl Renderer {
         kind: OutputKind,
         spp: u32,
     ) -> Result<Frame> {
-        if spp <= 1 || kind == OutputKind::Geodesic {
+        if spp <= 1 || kind.is_aov() {
             return self.render(&sample_scene(0), width, height, kind);
         }
         self.check_size(width, height)?;

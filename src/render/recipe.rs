@@ -73,13 +73,15 @@ pub fn add_frame<'a>(
             raymarch::RaymarchInputs {
                 params,
                 images,
-                output: if output == OutputKind::Geodesic {
+                output: if output.is_aov() {
                     raymarch::RaymarchOutput::Geodesic
                 } else {
                     raymarch::RaymarchOutput::Beauty
                 },
                 size,
-                variant: if output == OutputKind::Geodesic {
+                variant: if output == OutputKind::Stokes {
+                    variant.for_stokes()
+                } else if output == OutputKind::Geodesic {
                     variant.for_aov()
                 } else {
                     *variant
@@ -91,7 +93,7 @@ pub fn add_frame<'a>(
         ),
         HdrSource::Image(image) => image,
     };
-    if output == OutputKind::Geodesic {
+    if output.is_aov() {
         return hdr;
     }
     let hdr = match accumulation {

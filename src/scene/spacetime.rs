@@ -8,13 +8,25 @@ use glam::DVec3;
 use super::{BlackHole, Camera, Scene, Stereo};
 use crate::physics::Hole;
 use crate::physics::observer::Observer;
-use crate::spacetime::{Body, Spacetime, Viewer};
+use crate::spacetime::{Body, Emission, Spacetime, Viewer};
 
 /// What a scene's spacetime is built from: the holes, gravity, the disk's
 /// normal. The renderer keeps its spacetime while this stays the same.
 pub type SpacetimeKey = (Vec<BlackHole>, bool, [f64; 3]);
 
 impl Scene {
+    /// The polarized disk's emitter model from `[polarization]` (the field
+    /// normalised; validated non-zero).
+    pub fn emission(&self) -> Emission {
+        let p = &self.polarization;
+        Emission {
+            field: DVec3::from(p.field).normalize(),
+            spectral_index: p.spectral_index,
+            emissivity_index: p.emissivity_index,
+            fraction: p.fraction,
+        }
+    }
+
     /// What the spacetime is built from ([`SpacetimeKey`]).
     pub fn spacetime_key(&self) -> SpacetimeKey {
         (

@@ -97,7 +97,25 @@ impl Scene {
         self.validate_disk()?;
         self.validate_sky_and_plane()?;
         self.validate_rendering()?;
+        self.validate_polarization()?;
         self.validate_animation()
+    }
+
+    fn validate_polarization(&self) -> Check {
+        let p = &self.polarization;
+        let key = |k| [Key("polarization"), Key(k)];
+        direction(&key("field"), &p.field)?;
+        let within = |k, v: f64, lo: f64, hi: f64| {
+            rule(
+                v.in_range() && (lo..=hi).contains(&v),
+                &key(k),
+                v,
+                format!("must be in [{lo}, {hi}]"),
+            )
+        };
+        within("spectral_index", p.spectral_index, -2.0, 5.0)?;
+        within("emissivity_index", p.emissivity_index, -10.0, 10.0)?;
+        within("fraction", p.fraction, 0.0, 1.0)
     }
 
     fn validate_camera_and_holes(&self) -> Check {

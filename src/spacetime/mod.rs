@@ -22,6 +22,9 @@ pub mod radii;
 
 use glam::DVec3;
 
+/// The polarized thin disk's emitter model and Stokes parameters: what the
+/// door hands the renderer and the tests (physics/polarization.rs).
+pub use crate::physics::polarization::{Emission, Stokes};
 pub use fall::Fall;
 pub use kerr::SpinningHole;
 pub use placement::{EndRefusal, FALLING_MIN_R, Refusal};

@@ -181,12 +181,23 @@ pub fn render_aov_with(
     height: u32,
     env: &[(&str, &str)],
 ) -> (blackhole::Scene, image::Rgba32FImage) {
+    render_aov_named("geodesic", toml, width, height, env)
+}
+
+/// The AOV `aov` (`geodesic`, `stokes`) of a scene, through the CLI.
+pub fn render_aov_named(
+    aov: &str,
+    toml: &str,
+    width: u32,
+    height: u32,
+    env: &[(&str, &str)],
+) -> (blackhole::Scene, image::Rgba32FImage) {
     let dir = scratch();
     let scene_path = path_in(&dir, "scene.toml");
     std::fs::write(&scene_path, toml).unwrap();
     let out = path_in(&dir, "aov.exr");
     let mut c = blackhole();
-    c.args(["render", "--aov", "geodesic", "--width", &width.to_string()])
+    c.args(["render", "--aov", aov, "--width", &width.to_string()])
         .args(["--height", &height.to_string(), "--scene"])
         .arg(&scene_path)
         .arg("--out")

@@ -26,6 +26,17 @@ struct KerrCamera {
     kreal inv_e;         // 1 / E, E per unit energy the camera measures
 };
 
+// The flat triad (e_r, e_theta, e_phi) at the camera's place, in the
+// hole's frame (x = e1, y = the spin axis, z = e2).
+void kerr_triad(KerrCamera k, out kvec3 er, out kvec3 et, out kvec3 ep) {
+    kreal a = k.a, r = k.r, c = k.c, cp = k.cp, sp = k.sp;
+    kreal s = sqrt(max(1.0 - c * c, 0.0));
+    kreal rho = sqrt(r * r + a * a), rs = sqrt(r * r + a * a * c * c);
+    er = kvec3(r * s * cp, rho * c, -r * s * sp) / rs;
+    et = kvec3(rho * c * cp, -r * s, -rho * c * sp) / rs;
+    ep = kvec3(-sp, 0.0, -cp);
+}
+
 // The camera's Boyer-Lindquist place from rel (from the hole): k.a, k.to_m,
 // k.r, k.c, k.cp, k.sp and sin theta (s); the unit direction d along the
 // flat triad there (e_r, e_theta, e_phi) in dtr.
@@ -54,11 +65,8 @@ void kerr_place(vec3 rel, vec3 d, inout KerrCamera k, out kreal s, out kvec3 dtr
     k.c = c;
     k.cp = ph_len > 0.0 ? p.x / ph_len : 1.0;
     k.sp = ph_len > 0.0 ? -p.z / ph_len : 0.0;
-    kreal cp = k.cp, sp = k.sp;
-    kreal rs = sqrt(r * r + a * a * c * c);
-    kvec3 er = kvec3(r * s * cp, rho * c, -r * s * sp) / rs;
-    kvec3 et = kvec3(rho * c * cp, -r * s, -rho * c * sp) / rs;
-    kvec3 ep = kvec3(-sp, 0.0, -cp);
+    kvec3 er, et, ep;
+    kerr_triad(k, er, et, ep);
     dtr = kvec3(dot(dd, er), dot(dd, et), dot(dd, ep));
 }
 

@@ -7,7 +7,7 @@
 // (`baked_values.glsl`), and src/passes/raymarch/baked.rs reads the
 // values from a block with it: a baked field is one row here.
 baked_values! {
-    first_id: 14;
+    first_id: 15;
     BAKED_HOLE_X, "metric.holes[0].x", |p| p.metric.holes[0][0];
     BAKED_HOLE_Y, "metric.holes[0].y", |p| p.metric.holes[0][1];
     BAKED_HOLE_Z, "metric.holes[0].z", |p| p.metric.holes[0][2];

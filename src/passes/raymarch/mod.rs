@@ -57,6 +57,9 @@ pub mod glsl {
     pub const STAGE_ALL: u32 = 0;
     pub const STAGE_TRACE: u32 = 1;
     pub const STAGE_DEFERRED: u32 = 2;
+    pub const POL_OFF: u32 = 0;
+    pub const POL_VIEW: u32 = 1;
+    pub const POL_STOKES: u32 = 2;
     pub use crate::camera::{PROJ_EQUIRECT, PROJ_FISHEYE, PROJ_PINHOLE, STEREO_NONE, STEREO_ODS};
     /// Workgroups (of 64 listed pixels) in one row of the deferred pass's
     /// indirect dispatch.
@@ -152,7 +155,10 @@ pub struct Variant {
     /// them run to a constant (the static frame of a metric of several
     /// holes or none, the straight and summed paths' capture tests).
     pub holes: u32,
-    /// The scene's static parameters compiled in ([`baked`]; constants 14
+    /// The polarized thin disk, `glsl::POL_*` (constant 14): off, the
+    /// polarized view, or the Stokes AOV.
+    pub polarization: u32,
+    /// The scene's static parameters compiled in ([`baked`]; constants 15
     /// on), or read from the parameter block.
     pub baked: Option<Baked>,
 }
@@ -186,6 +192,11 @@ impl Variant {
             rain_form: observer.rain.is_some(),
             kerr_inside: spacetime.camera_inside_spinning(&viewer),
             holes: spacetime.holes().len().min(crate::scene::MAX_HOLES) as u32,
+            polarization: if scene.polarization.enabled {
+                glsl::POL_VIEW
+            } else {
+                glsl::POL_OFF
+            },
             baked: bake.then(|| Baked::of(block)),
         }
     }
@@ -196,7 +207,16 @@ impl Variant {
         Variant {
             aov: true,
             light_delay: false,
+            polarization: glsl::POL_OFF,
             ..self
+        }
+    }
+
+    /// The same variant writing the Stokes AOV.
+    pub fn for_stokes(self) -> Variant {
+        Variant {
+            polarization: glsl::POL_STOKES,
+            ..self.for_aov()
         }
     }
 
@@ -239,6 +259,7 @@ impl Variant {
             ("RAIN_FORM", u32::from(self.rain_form)),
             ("KERR_INSIDE", u32::from(self.kerr_inside)),
             ("HOLE_COUNT", self.holes),
+            ("POLARIZATION", self.polarization),
         ]
     }
 
@@ -280,9 +301,9 @@ impl Variant {
     }
 }
 
-/// How many specialisation constants a [`Variant`] has (ids 0 to 13; the
+/// How many specialisation constants a [`Variant`] has (ids 0 to 14; the
 /// baked values follow from [`baked::BAKED_FIRST_ID`]).
-pub const VARIANT_CONSTANTS: usize = 14;
+pub const VARIANT_CONSTANTS: usize = 15;
 
 /// The parameter block is a read-only storage buffer, not a uniform buffer:
 /// on Mesa's lavapipe (22.3) every dispatch that read a uniform buffer

@@ -193,6 +193,18 @@ pub struct PlaneParams {
     pub half_size: f32,
 }
 
+/// `[polarization]`: the emitter's model (shaders/include/polarization.glsl).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
+pub struct PolarizationParams {
+    /// The field on the gas's frame (e_(r), e_(phi), e_(z)), unit.
+    pub field: [f32; 3],
+    pub fraction: f32,
+    pub spectral_index: f32,
+    pub emissivity_index: f32,
+    pub _pad: [f32; 2],
+}
+
 /// The whole block (a read-only storage buffer, written by the host).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, Pod, Zeroable)]
@@ -205,6 +217,7 @@ pub struct RaymarchParams {
     pub volume: VolumeParams,
     pub sky: SkyParams,
     pub plane: PlaneParams,
+    pub polarization: PolarizationParams,
 }
 
 /// What one frame adds to the scene.
@@ -299,7 +312,19 @@ impl RaymarchParams {
             volume: volume(scene),
             sky: sky(scene, frame),
             plane: plane(scene),
+            polarization: polarization(scene),
         }
+    }
+}
+
+fn polarization(scene: &Scene) -> PolarizationParams {
+    let e = scene.emission();
+    PolarizationParams {
+        field: v3(e.field),
+        fraction: e.fraction as f32,
+        spectral_index: e.spectral_index as f32,
+        emissivity_index: e.emissivity_index as f32,
+        _pad: [0.0; 2],
     }
 }
 

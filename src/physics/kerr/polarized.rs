@@ -13,7 +13,7 @@ use super::radial::{Radial, r_potential};
 use super::{KerrDisk, KerrObserver, first_disk_crossing, observer_velocity, to_zamo_frame};
 use super::{LocalFrame, PlacementError, disk_g, frame::Constants};
 use crate::physics::polarization::{
-    Emission, Stokes, Zamo, angle_at_camera, boost, emit, emitted_intensity, sky_basis,
+    Emission, Seen, Stokes, Zamo, angle_at_camera, boost, emit, emitted_intensity, sky_basis,
     walker_penrose,
 };
 
@@ -55,13 +55,13 @@ pub fn stokes(
     observer: KerrObserver,
     disk: KerrDisk,
     em: &Emission,
-) -> Result<Stokes, PlacementError> {
+) -> Result<Seen, PlacementError> {
     let a = spin;
     let beta = observer_velocity(observer, 2.0 * position, a)?;
     let (dz, doppler) = to_zamo_frame(d, beta);
     let cc = Constants::of(2.0 * position, dz, a);
     if cc.energy == 0.0 || cc.eta <= 0.0 {
-        return Ok(Stokes::default());
+        return Ok(Seen::default());
     }
     let f = cc.frame;
     let rad = Radial::new(a, cc.lambda, cc.eta, f.r, cc.s_r);
@@ -74,7 +74,7 @@ pub fn stokes(
         cc.s_theta,
     );
     let Some((n, tc, rc)) = first_disk_crossing(&rad, &ang, Some(disk)) else {
-        return Ok(Stokes::default());
+        return Ok(Seen::default());
     };
     let turn = cc.energy.signum();
     // The backward polar motion at the n-th crossing: s_theta (-1)^(n + h).
@@ -90,7 +90,7 @@ pub fn stokes(
     let g = disk_g(rc, a, cc.lambda, f.alpha, f.omega) * doppler;
     let i = g.powf(3.0 + em.spectral_index) * emitted_intensity(em, rc, e.sin_b, e.k_z);
     if i == 0.0 {
-        return Ok(Stokes::default());
+        return Ok(Seen::default());
     }
     let kappa = walker_penrose(&ze, pe, e.f);
     // At the camera: the photon, north and west, boosted into the ZAMO's frame.
@@ -101,5 +101,9 @@ pub fn stokes(
         on_triad(&f, t, s)
     };
     let chi = angle_at_camera(&zc, kappa, lift(1.0, -d), lift(0.0, nn), lift(0.0, ww));
-    Ok(Stokes::linear(i, em.fraction, chi))
+    Ok(Seen {
+        stokes: Stokes::linear(i, em.fraction, chi),
+        sin_b: e.sin_b,
+        k_z: e.k_z,
+    })
 }

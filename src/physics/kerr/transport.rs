@@ -16,7 +16,7 @@ use glam::DVec3;
 
 use super::schild::{Dual, backward, bl_r, kerr_schild_start};
 use super::{KerrDisk, KerrObserver, LocalFrame, PlacementError, observer_velocity, r_horizon};
-use crate::physics::polarization::{Emission, Stokes, boost, emitted_intensity, sky_basis};
+use crate::physics::polarization::{Emission, Seen, Stokes, boost, emitted_intensity, sky_basis};
 
 /// F and l_X, l_Y, l_Z with their gradients at X (M = 1, spin along +Z).
 fn metric_parts(x: DVec3, a: f64) -> (Dual, [Dual; 3]) {
@@ -175,7 +175,7 @@ pub fn stokes_transported(
     observer: KerrObserver,
     disk: KerrDisk,
     em: &Emission,
-) -> Result<Stokes, PlacementError> {
+) -> Result<Seen, PlacementError> {
     let a = spin;
     let beta = observer_velocity(observer, 2.0 * position, a)?;
     let f = LocalFrame::at(2.0 * position, a);
@@ -197,7 +197,7 @@ pub fn stokes_transported(
         let r = bl_r(s.x, a);
         let (vx, _) = backward(s.x, s.p, p_t, a);
         if r > 1e6 || (r > horizon && r < horizon * 1.01 && vx.dot(s.x) < 0.0) {
-            return Ok(Stokes::default());
+            return Ok(Seen::default());
         }
         let h = 2e-3 * r.min((r - horizon).max(1e-3) * 50.0) / vx.length().max(1e-300);
         let next = s.rk4(p_t, a, h);
@@ -219,11 +219,11 @@ pub fn stokes_transported(
         }
         s = next;
     }
-    Ok(Stokes::default())
+    Ok(Seen::default())
 }
 
 /// The Stokes parameters of the state at the disk's crossing.
-fn emitted_at(c: State, p_t: f64, a: f64, rc: f64, em: &Emission) -> Stokes {
+fn emitted_at(c: State, p_t: f64, a: f64, rc: f64, em: &Emission) -> Seen {
     let [u, e_r, e_phi, e_z] = gas_frame(c.x, a);
     let p = [p_t, c.p.x, c.p.y, c.p.z];
     // p^(t) = -p.u, the rest p.e (the camera's observer measures 1).
@@ -233,12 +233,16 @@ fn emitted_at(c: State, p_t: f64, a: f64, rc: f64, em: &Emission) -> Stokes {
     let sin_b = kb.length();
     let i = energy.powf(-(3.0 + em.spectral_index)) * emitted_intensity(em, rc, sin_b, k.z);
     if i == 0.0 {
-        return Stokes::default();
+        return Seen::default();
     }
     let fe = kb / sin_b;
     let fv: [f64; 4] = std::array::from_fn(|m| fe.x * e_r[m] + fe.y * e_phi[m] + fe.z * e_z[m]);
     let (c1, c2) = (pair(c.n, fv), pair(c.w, fv));
-    Stokes::linear(i, em.fraction, (-c2).atan2(c1))
+    Seen {
+        stokes: Stokes::linear(i, em.fraction, (-c2).atan2(c1)),
+        sin_b,
+        k_z: k.z,
+    }
 }
 
 #[cfg(test)]

@@ -1,0 +1,143 @@
+// Polarized light of the thin disk (docs/polarization.md), the GPU twin of
+// src/physics/polarization.rs: the one include through which every metric
+// that shades the disk in closed form gives a disk hit its Stokes
+// parameters. The metric hands over, at the crossing, the photon's
+// ZAMO-frame momentum (the static frame's at a* = 0) and, at the camera,
+// the photon's and the sky's north and west as ZAMO-frame 4-vectors
+// (t, r, theta, phi); the emission in the gas's frame and the
+// Walker-Penrose constant, which carries the electric vector to the camera
+// in closed form, are here. Units M = 1.
+//
+// The constant of photon p and polarization f is kappa = (A - i B)(r - i a
+// cos theta), A and B the bivector p ^ f's parts on the tetrad (see
+// walker_penrose in the Rust twin); at the camera it is solved for f's two
+// components across the ray. Far cameras: kappa's parts there are of the
+// order of the impact parameter over r, so the camera's side runs in
+// `preal` (64 bits where the device has them), the emitter's in 32.
+#ifndef POLARIZATION_GLSL
+#define POLARIZATION_GLSL
+
+#include "params.glsl"
+#include "variant.glsl"
+
+// The camera side's precision: 64 bits in the spinning hole's build with
+// 64-bit roots (the device has shaderFloat64), else 32.
+#if defined(METRIC_KERR) && !defined(KERR_F32_ROOTS)
+#define preal double
+#define pvec2 dvec2
+#define pvec3 dvec3
+#define pvec4 dvec4
+#else
+#define preal float
+#define pvec2 vec2
+#define pvec3 vec3
+#define pvec4 vec4
+#endif
+
+// The pixel's direction in the observer's own frame (camera_ray sets it):
+// the sky's north and west are taken across it.
+vec3 pol_dir_observer = vec3(0.0, 0.0, 1.0);
+
+// kappa (as a complex vec2) of p and f, ZAMO components at Boyer-Lindquist
+// (r, cos theta = c) of a hole of spin a: the camera's side, in preal.
+pvec2 pol_kappa_camera(preal r, preal c, preal a, pvec4 p, pvec4 f) {
+    preal s = sqrt(max(1.0 - c * c, 0.0));
+    preal rho2 = r * r + a * a, sig = r * r + a * a * c * c, delta = r * r - 2.0 * r + a * a;
+    preal big_a = rho2 * rho2 - a * a * delta * s * s;
+    preal alpha = sqrt(sig * delta / big_a), omega = 2.0 * a * r / big_a;
+    preal s_varpi = sqrt(sig / big_a);  // sin theta / varpi, finite on the axis
+    preal m0r = p.x * f.y - p.y * f.x, mrp = p.y * f.w - p.w * f.y;
+    preal m0t = p.x * f.z - p.z * f.x, mpt = p.w * f.z - p.z * f.w;
+    preal ka = sqrt(delta / sig) * ((1.0 - a * s * s * omega) / alpha * m0r + a * s * s_varpi * mrp);
+    preal kb = (s / sqrt(sig)) * (rho2 * omega - a) / alpha * m0t + rho2 * s_varpi / sqrt(sig) * mpt;
+    // (A - i B)(r - i a c)
+    preal im_r = -a * c;
+    return pvec2(ka * r + kb * im_r, ka * im_r - kb * r);
+}
+
+// The same at an equatorial emitter (cos theta = 0), in 32 bits.
+vec2 pol_kappa_equator(float r, float a, vec4 p, vec4 f) {
+    float rho2 = r * r + a * a, delta = r * r - 2.0 * r + a * a;
+    float big_a = rho2 * rho2 - a * a * delta;
+    float alpha = r * sqrt(delta / big_a), omega = 2.0 * a * r / big_a, s_varpi = r * inversesqrt(big_a);
+    float m0r = p.x * f.y - p.y * f.x, mrp = p.y * f.w - p.w * f.y;
+    float m0t = p.x * f.z - p.z * f.x, mpt = p.w * f.z - p.z * f.w;
+    float ka = (sqrt(delta) / r) * ((1.0 - a * omega) / alpha * m0r + a * s_varpi * mrp);
+    float kb = (rho2 * omega - a) / (alpha * r) * m0t + rho2 * s_varpi / r * mpt;
+    return vec2(ka * r, -kb * r);
+}
+
+// The ZAMO-frame photon of constants (lambda, eta) crossing the equator at
+// r (M) with backward signs s_r, s_th, per unit |E| (turn: the sign of E),
+// future-pointing.
+vec4 pol_equatorial_photon(float r, float a, float lam, float eta, float s_r, float s_th, float turn) {
+    float rho2 = r * r + a * a, delta = r * r - 2.0 * r + a * a;
+    float big_a = rho2 * rho2 - a * a * delta;
+    float alpha = r * sqrt(delta / big_a), omega = 2.0 * a * r / big_a, varpi = sqrt(big_a) / r;
+    float x = rho2 - a * lam, y = lam - a;
+    float big_r = max(x * x - delta * (eta + y * y), 0.0);
+    return vec4(turn * (1.0 - omega * lam) / alpha, -s_r * sqrt(big_r) / (r * sqrt(delta)),
+                -s_th * sqrt(max(eta, 0.0)) / r, turn * lam / varpi);
+}
+
+// The emission towards the photon p (ZAMO components) at equatorial r (M):
+// the gas's frame is the ZAMO's boosted along e_phi by the Keplerian speed,
+// its vertical e_(z) = -e_theta. Returns kappa of p and the electric vector
+// f = k x B / |k x B| (.xy), and I_e = (r / rs)^-n sin(theta_B)^(1 + alpha)
+// / |k_z| (.z); .w = 0 where the angle is undefined (sin theta_B = 0).
+vec4 pol_emit(float r, float a, vec4 p) {
+    float rho2 = r * r + a * a, delta = r * r - 2.0 * r + a * a;
+    float big_a = rho2 * rho2 - a * a * delta;
+    float alpha = r * sqrt(delta / big_a), omega = 2.0 * a * r / big_a, varpi = sqrt(big_a) / r;
+    float om = 1.0 / (r * sqrt(r) + a);
+    float beta = varpi * (om - omega) / alpha, gam = inversesqrt(max(1.0 - beta * beta, 1e-12));
+    float pt = gam * (p.x - beta * p.w);
+    vec3 k = vec3(p.y, gam * (p.w - beta * p.x), -p.z) / pt;
+    vec3 kb = cross(k, P.polarization.field);
+    float sin_b = length(kb);
+    vec3 fe = sin_b > 1e-7 ? kb / sin_b : vec3(0.0);
+    vec4 f = vec4(gam * beta * fe.y, fe.x, -fe.z, gam * fe.y);
+    float ie = pow(0.5 * r, -P.polarization.emissivity_index) * pow(sin_b, 1.0 + P.polarization.spectral_index)
+             / max(abs(k.z), 1e-6);
+    return vec4(pol_kappa_equator(r, a, p, f), ie, sin_b > 1e-7 ? 1.0 : 0.0);
+}
+
+// A 4-vector of the observer moving at beta through the ZAMO, in the
+// ZAMO's components (v0; v): (gamma (v0 + beta.v); v + ((gamma - 1)(b.v)
+// / b^2 + gamma v0) beta).
+pvec4 pol_boost(pvec3 beta, preal v0, pvec3 v) {
+    preal b2 = dot(beta, beta);
+    if (b2 == 0.0) return pvec4(v0, v);
+    preal gam = 1.0 / sqrt(1.0 - b2), bv = dot(beta, v);
+    return pvec4(gam * (v0 + bv), v + ((gam - 1.0) * bv / b2 + gam * v0) * beta);
+}
+
+// The electric vector's angle east of north at the camera, as (cos 2 chi,
+// sin 2 chi): kappa = c1 kappa(p, n) + c2 kappa(p, w) for real c1, c2 (the
+// gauge part along p drops out), chi = atan2(-c2, c1). kn, kw: kappa(p, n)
+// and kappa(p, w) at the camera.
+vec2 pol_angle(vec2 kappa, vec2 kn, vec2 kw) {
+    float det = kn.x * kw.y - kw.x * kn.y;
+    float c1 = (kappa.x * kw.y - kw.x * kappa.y) / det;
+    float c2 = (kn.x * kappa.y - kappa.x * kn.y) / det;
+    // cos 2 chi = (c1^2 - c2^2) / |c|^2, sin 2 chi = -2 c1 c2 / |c|^2.
+    float n2 = max(c1 * c1 + c2 * c2, 1e-37);
+    return vec2((c1 * c1 - c2 * c2) / n2, -2.0 * c1 * c2 / n2);
+}
+
+// A disk hit's polarization (Hit.pol): (cos 2 chi, sin 2 chi) from
+// pol_angle, I_e and whether the angle is defined from pol_emit.
+vec4 pol_of(vec4 emitted, vec2 angle) {
+    return vec4(angle, emitted.zw);
+}
+
+// The Stokes vector of a disk hit from its pol_of and the observed g: I =
+// g^(3 + alpha) I_e, P = fraction I (0 where the angle is undefined), Q =
+// P cos 2 chi, U = P sin 2 chi, V = 0.
+vec4 pol_stokes(vec4 pol, float g) {
+    float i = pow(max(g, 0.0), 3.0 + P.polarization.spectral_index) * pol.z;
+    float p = P.polarization.fraction * i * pol.w;
+    return vec4(i, p * pol.xy, 0.0);
+}
+
+#endif
