@@ -173,6 +173,7 @@ PixelRay camera_ray(uvec2 px) {
     else if (PROJECTION == PROJ_FISHEYE) ray = fisheye(px);
     else ray = pinhole(px);
     pol_dir_observer = ray.dir;
+    pol_origin = ray.origin;
     ray.dir = observer_to_coordinate(ray.origin, ray.dir);
     return ray;
 }

@@ -37,6 +37,8 @@
 // The pixel's direction in the observer's own frame (camera_ray sets it):
 // the sky's north and west are taken across it.
 vec3 pol_dir_observer = vec3(0.0, 0.0, 1.0);
+// And where its ray starts (an ODS eye's place on the viewing circle).
+vec3 pol_origin = vec3(0.0);
 
 // kappa (as a complex vec2) of p and f, ZAMO components at Boyer-Lindquist
 // (r, cos theta = c) of a hole of spin a: the camera's side, in preal.
@@ -110,6 +112,48 @@ pvec4 pol_boost(pvec3 beta, preal v0, pvec3 v) {
     if (b2 == 0.0) return pvec4(v0, v);
     preal gam = 1.0 / sqrt(1.0 - b2), bv = dot(beta, v);
     return pvec4(gam * (v0 + bv), v + ((gam - 1.0) * bv / b2 + gam * v0) * beta);
+}
+
+// The non-rotating hole's side, coordinate-free in the static frame (a =
+// 0, where kappa = r [(p^0 f_r - p_r f^0) + i (p x f) . r_hat]: no polar
+// axis needed): 4-vectors as (t; world xyz) on the static frame at a point
+// at distance r (any unit, the same at both ends) in the direction r_hat.
+vec2 pol_kappa_static(float r, vec3 r_hat, vec4 p, vec4 f) {
+    float a = p.x * dot(f.yzw, r_hat) - dot(p.yzw, r_hat) * f.x;
+    return r * vec2(a, dot(cross(p.yzw, f.yzw), r_hat));
+}
+
+// The emission of the non-rotating hole's disk at r (rs units) towards the
+// photon moving along the unit k_hat (static frame): the gas moves along
+// e_phi = n x r_hat at beta = sqrt(M / (r - 2M)). As pol_emit: kappa (of
+// the photon (1; k_hat)), I_e, defined.
+vec4 pol_emit_static(float r, vec3 r_hat, vec3 normal, vec3 k_hat) {
+    vec3 e_phi = cross(normal, r_hat);
+    float beta = sqrt(0.5 / max(r - 1.0, 1e-6)), gam = inversesqrt(max(1.0 - beta * beta, 1e-12));
+    float kp = dot(k_hat, e_phi);
+    float pt = gam * (1.0 - beta * kp);
+    vec3 k = vec3(dot(k_hat, r_hat), gam * (kp - beta), dot(k_hat, normal)) / pt;
+    vec3 kb = cross(k, P.polarization.field);
+    float sin_b = length(kb);
+    vec3 fe = sin_b > 1e-7 ? kb / sin_b : vec3(0.0);
+    vec4 f = vec4(gam * beta * fe.y, fe.x * r_hat + gam * fe.y * e_phi + fe.z * normal);
+    float ie = pow(r, -P.polarization.emissivity_index) * pow(sin_b, 1.0 + P.polarization.spectral_index)
+             / max(abs(k.z), 1e-6);
+    return vec4(pol_kappa_static(r, r_hat, vec4(1.0, k_hat), f), ie, sin_b > 1e-7 ? 1.0 : 0.0);
+}
+
+// At the non-rotating hole's camera (r rs from the hole, along r_hat),
+// whose observer moves at beta through the static frame: kappa(p, n) and
+// kappa(p, w) (.xy, .zw) of the photon along -dir and the sky's north and
+// west across the observer's own direction.
+vec4 pol_camera_static(float r, vec3 r_hat, vec3 beta) {
+    vec3 d = pol_dir_observer;
+    vec3 nn = normalize(P.camera.up - dot(P.camera.up, d) * d), ww = cross(nn, d);
+    vec4 p = vec4(pol_boost(beta, 1.0, -d)), n4 = vec4(pol_boost(beta, 0.0, nn)), w4 = vec4(pol_boost(beta, 0.0, ww));
+    // Across the photon as traced (see kerr_polarization).
+    n4.x = dot(n4.yzw, p.yzw) / p.x;
+    w4.x = dot(w4.yzw, p.yzw) / p.x;
+    return vec4(pol_kappa_static(r, r_hat, p, n4), pol_kappa_static(r, r_hat, p, w4));
 }
 
 // The electric vector's angle east of north at the camera, as (cos 2 chi,

@@ -14,6 +14,7 @@
 #include "hit.glsl"
 #include "disk.glsl"
 #include "volume.glsl"
+#include "polarization.glsl"
 
 // The frame at a ray's origin and a disk point's radius (static_frame.glsl).
 NON_ROTATING_METRIC(true)
@@ -94,8 +95,29 @@ float light_travel_time(LightPath path, float phi, float b, float rs) {
 // disk plane), at angle phi0 + j pi: its direction from the hole is
 // (-1)^j `node`, and its azimuth az0 + j pi, so no sine, cosine or
 // arctangent is needed per crossing.
+// The polarization of a crossing at pos, r rs from the hole, angle phi
+// along the backward path in its plane (normal nrm) of constant cb = (rs /
+// b)^2 (polarization.glsl; Hit.pol): the photon's static-frame direction
+// from u' (its size from the orbit equation u'^2 = cb - u^2 (1 - u), its
+// sign from the path on either side), the camera's side from its own place.
+vec4 schwarzschild_polarization(LightPath path, float phi, float u, float cb, vec3 c, vec3 pos, vec3 nrm,
+                                float rs) {
+    float du = sqrt(max(cb - u * u * (1.0 - u), 0.0));
+    du *= path_u(path, phi + 1e-3) >= path_u(path, phi - 1e-3) ? 1.0 : -1.0;
+    vec3 r_hat = normalize(pos - c);
+    // The backward ray's direction: -(u' / u) / sqrt(1 - u) along r_hat, 1
+    // along phi_hat = nrm x r_hat; the photon runs the other way.
+    vec3 k_hat = -normalize((-du / (u * sqrt(max(1.0 - u, 1e-12)))) * r_hat + cross(nrm, r_hat));
+    vec4 em = pol_emit_static(1.0 / u, r_hat, P.disk.normal, k_hat);
+    vec3 rel = pol_origin - c;
+    vec3 beta = RAIN_FORM ? -P.observer.fall_speed * P.observer.radial
+              : OBSERVER_MOVES ? P.observer.velocity : vec3(0.0);
+    vec4 k = pol_camera_static(length(rel) / rs, normalize(rel), beta);
+    return pol_of(em, pol_angle(em.xy, k.xy, k.zw));
+}
+
 bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 node, float az0,
-                   float rs, float lambda, float b_imp, inout Hit hit) {
+                   float rs, float lambda, float b_imp, float cb, vec3 nrm, inout Hit hit) {
     float phi = min(first_crossing_in(path, path.win_a, next),
                     first_crossing_in(path, path.win_b, next));
     if (phi >= 1e29) {
@@ -117,6 +139,7 @@ bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 no
     hit.outcome = OUT_DISK;
     hit.pos = pos;
     hit.g = g;
+    if (POLARIZATION != POL_OFF) hit.pol = schwarzschild_polarization(path, phi, u, cb, c, pos, nrm, rs);
     return true;
 #else
     float t = P.disk.rotation_time;
@@ -251,7 +274,7 @@ Hit metric_trace(vec3 x, vec3 d) {
                 vec3 node = (nb * e1 - na * e2) / tilt;      // cos(phi0) e1 + sin(phi0) e2
                 float az0 = THIN_STRUCTURE ? disk_azimuth(c + node) : 0.0;
                 for (int k = 0; k < THIN_CROSSINGS; ++k) {
-                    if (thin_crossing(path, next, phi0, c, node, az0, rs, lambda, b_imp, hit)) return hit;
+                    if (thin_crossing(path, next, phi0, c, node, az0, rs, lambda, b_imp, cb, nrm, hit)) return hit;
                     if (next >= 1e29) break;
                 }
             }

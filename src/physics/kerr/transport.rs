@@ -176,8 +176,25 @@ pub fn stokes_transported(
     disk: KerrDisk,
     em: &Emission,
 ) -> Result<Seen, PlacementError> {
+    let beta = observer_velocity(observer, 2.0 * position, spin)?;
+    Ok(stokes_transported_moving(
+        position, d, up, spin, beta, disk, em,
+    ))
+}
+
+/// [`stokes_transported`] for a camera moving at `beta` (world axes)
+/// through the ZAMO's frame (the static frame at a = 0), outside the
+/// horizon.
+pub fn stokes_transported_moving(
+    position: DVec3,
+    d: DVec3,
+    up: DVec3,
+    spin: f64,
+    beta: DVec3,
+    disk: KerrDisk,
+    em: &Emission,
+) -> Seen {
     let a = spin;
-    let beta = observer_velocity(observer, 2.0 * position, a)?;
     let f = LocalFrame::at(2.0 * position, a);
     let (nn, ww) = sky_basis(d, up);
     let lift = |v0: f64, v: DVec3| {
@@ -197,7 +214,7 @@ pub fn stokes_transported(
         let r = bl_r(s.x, a);
         let (vx, _) = backward(s.x, s.p, p_t, a);
         if r > 1e6 || (r > horizon && r < horizon * 1.01 && vx.dot(s.x) < 0.0) {
-            return Ok(Seen::default());
+            return Seen::default();
         }
         let h = 2e-3 * r.min((r - horizon).max(1e-3) * 50.0) / vx.length().max(1e-300);
         let next = s.rk4(p_t, a, h);
@@ -214,12 +231,12 @@ pub fn stokes_transported(
             let c = s.rk4(p_t, a, 0.5 * (lo + hi));
             let rc = bl_r(c.x, a);
             if (2.0 * disk.inner..=2.0 * disk.outer).contains(&rc) {
-                return Ok(emitted_at(c, p_t, a, rc, em));
+                return emitted_at(c, p_t, a, rc, em);
             }
         }
         s = next;
     }
-    Ok(Seen::default())
+    Seen::default()
 }
 
 /// The Stokes parameters of the state at the disk's crossing.
