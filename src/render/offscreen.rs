@@ -42,6 +42,13 @@ impl Renderer {
                 "--aov {aov} describes thin-disk hits; this scene's disk is volumetric"
             )));
         }
+        if kind == OutputKind::Stokes
+            && let Some(why) = scene
+                .spacetime()
+                .polarization_refusal(&scene.camera.viewer())
+        {
+            return Err(Error::Usage(format!("--aov stokes {why}")));
+        }
         let build = std::time::Instant::now();
         let plan = self.start_frame(OFFSCREEN_SLOT, scene, (width, height), (0.0, 0.0))?;
         self.offscreen(

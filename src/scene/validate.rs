@@ -104,6 +104,12 @@ impl Scene {
     fn validate_polarization(&self) -> Check {
         let p = &self.polarization;
         let key = |k| [Key("polarization"), Key(k)];
+        rule(
+            !p.enabled,
+            &key("enabled"),
+            true,
+            "the polarized picture (Stokes I with ticks) is not drawn yet; `render --aov stokes` writes the Stokes parameters with these keys",
+        )?;
         direction(&key("field"), &p.field)?;
         let within = |k, v: f64, lo: f64, hi: f64| {
             rule(

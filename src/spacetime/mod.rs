@@ -195,6 +195,41 @@ impl Spacetime {
         self.observer(viewer.observer, viewer.position)
     }
 
+    /// Why the polarized thin disk (`--aov stokes`) cannot be computed for
+    /// this camera, if it cannot: it is carried in closed form for one hole
+    /// (spinning or not) and a camera outside the horizon (docs/polarization.md).
+    pub fn polarization_refusal(&self, viewer: &Viewer) -> Option<String> {
+        match &self.metric {
+            Metric::Flat(_) => {
+                return Some("needs gravity on (physics.gravity = true)".into());
+            }
+            Metric::Summed(h) => {
+                return Some(format!(
+                    "is exact for one hole; this scene has {} (their paths are integrated)",
+                    h.len()
+                ));
+            }
+            Metric::Schwarzschild(h) => {
+                let r = (viewer.position - h.position).length();
+                if r <= h.rs {
+                    return Some(format!(
+                        "needs a camera outside the horizon; this one is at {r} (rs = {})",
+                        h.rs
+                    ));
+                }
+            }
+            Metric::Kerr(_) => {
+                if self.camera_inside_spinning(viewer) {
+                    return Some(
+                        "needs a camera outside the horizon and its 5% band (the falling frame's)"
+                            .into(),
+                    );
+                }
+            }
+        }
+        None
+    }
+
     /// Whether a camera is a falling camera between a spinning hole's
     /// horizons, or just outside the outer one (within
     /// [`crate::physics::kerr::FALLING_FRAME_BAND`] of r+): the ray march's
