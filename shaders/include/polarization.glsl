@@ -69,6 +69,14 @@ vec2 pol_kappa_equator(float r, float a, vec4 p, vec4 f) {
     return vec2(ka * r, -kb * r);
 }
 
+// I_e = (r / rs)^-n sin(theta_B)^(1 + alpha) / |k_z| (r_rs: r in rs), for
+// sin theta_B > 0 (where it is 0 the angle is undefined and I_e is taken as
+// 0, as the Rust twin does; pow(0, y) is undefined for y <= 0).
+float pol_emitted(float r_rs, float sin_b, float k_z) {
+    return pow(r_rs, -P.polarization.emissivity_index) * pow(sin_b, 1.0 + P.polarization.spectral_index)
+         / max(abs(k_z), 1e-6);
+}
+
 // The ZAMO-frame photon of constants (lambda, eta) crossing the equator at
 // r (M) with backward signs s_r, s_th, per unit |E| (turn: the sign of E),
 // future-pointing.
@@ -99,8 +107,7 @@ vec4 pol_emit(float r, float a, vec4 p) {
     float sin_b = length(kb);
     vec3 fe = sin_b > 1e-7 ? kb / sin_b : vec3(0.0);
     vec4 f = vec4(gam * beta * fe.y, fe.x, -fe.z, gam * fe.y);
-    float ie = pow(0.5 * r, -P.polarization.emissivity_index) * pow(sin_b, 1.0 + P.polarization.spectral_index)
-             / max(abs(k.z), 1e-6);
+    float ie = sin_b > 1e-7 ? pol_emitted(0.5 * r, sin_b, k.z) : 0.0;
     return vec4(pol_kappa_equator(r, a, p, f), ie, sin_b > 1e-7 ? 1.0 : 0.0);
 }
 
@@ -137,8 +144,7 @@ vec4 pol_emit_static(float r, vec3 r_hat, vec3 normal, vec3 k_hat) {
     float sin_b = length(kb);
     vec3 fe = sin_b > 1e-7 ? kb / sin_b : vec3(0.0);
     vec4 f = vec4(gam * beta * fe.y, fe.x * r_hat + gam * fe.y * e_phi + fe.z * normal);
-    float ie = pow(r, -P.polarization.emissivity_index) * pow(sin_b, 1.0 + P.polarization.spectral_index)
-             / max(abs(k.z), 1e-6);
+    float ie = sin_b > 1e-7 ? pol_emitted(r, sin_b, k.z) : 0.0;
     return vec4(pol_kappa_static(r, r_hat, vec4(1.0, k_hat), f), ie, sin_b > 1e-7 ? 1.0 : 0.0);
 }
 

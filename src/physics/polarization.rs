@@ -140,9 +140,9 @@ impl Zamo {
 }
 
 /// The Walker-Penrose constant of photon `p` and polarization `f` (ZAMO
-/// components at `z`). On the polar axis (sin theta = 0) write it through
-/// the bivector, which needs no azimuthal basis: see [`walker_penrose`]'s
-/// body.
+/// components at `z`), written through the bivector p ^ f so that it stays
+/// finite on the polar axis (sin theta = 0), where any e_theta, e_phi
+/// across e_r will do.
 pub fn walker_penrose(z: &Zamo, p: [f64; 4], f: [f64; 4]) -> Complex64 {
     let (r, a, s) = (z.r, z.a, z.sin_theta);
     let rho2 = r * r + a * a;

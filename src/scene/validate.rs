@@ -119,7 +119,7 @@ impl Scene {
                 format!("must be in [{lo}, {hi}]"),
             )
         };
-        within("spectral_index", p.spectral_index, -2.0, 5.0)?;
+        within("spectral_index", p.spectral_index, -1.0, 5.0)?;
         within("emissivity_index", p.emissivity_index, -10.0, 10.0)?;
         within("fraction", p.fraction, 0.0, 1.0)
     }

@@ -26,6 +26,11 @@ struct KerrCamera {
     kreal inv_e;         // 1 / E, E per unit energy the camera measures
 };
 
+// A world vector in the hole's frame (x = e1, y = the spin axis, z = e2).
+kvec3 kerr_hole_frame(vec3 v) {
+    return kvec3(dot(v, P.disk.e1), dot(v, P.disk.normal), dot(v, P.disk.e2));
+}
+
 // The flat triad (e_r, e_theta, e_phi) at the camera's place, in the
 // hole's frame (x = e1, y = the spin axis, z = e2).
 void kerr_triad(KerrCamera k, out kvec3 er, out kvec3 et, out kvec3 ep) {
@@ -41,13 +46,12 @@ void kerr_triad(KerrCamera k, out kvec3 er, out kvec3 et, out kvec3 ep) {
 // k.r, k.c, k.cp, k.sp and sin theta (s); the unit direction d along the
 // flat triad there (e_r, e_theta, e_phi) in dtr.
 void kerr_place(vec3 rel, vec3 d, inout KerrCamera k, out kreal s, out kvec3 dtr) {
-    vec3 e1 = P.disk.e1, nrm = P.disk.normal, e2 = P.disk.e2;
     kreal a = kerr_spin();
     k.a = a;
     // Lengths in M = rs / 2: position and direction in the hole's frame.
     k.to_m = 2.0 / kreal(P.metric.holes[0].w);
-    kvec3 p = k.to_m * kvec3(dot(rel, e1), dot(rel, nrm), dot(rel, e2));
-    kvec3 dd = normalize(kvec3(dot(d, e1), dot(d, nrm), dot(d, e2)));
+    kvec3 p = k.to_m * kerr_hole_frame(rel);
+    kvec3 dd = normalize(kerr_hole_frame(d));
     // On the spin axis phi is undefined and lambda = 0 for every ray: the
     // camera moves 1e-6 of its distance off the axis, where the near-axis
     // form (the partner of Pi(-N), N ~ 1 / lambda^2) carries each ray's

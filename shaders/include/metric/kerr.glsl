@@ -152,11 +152,6 @@ float kerr_disk_light(inout Hit hit, int stop, float rc, float to_m, vec3 pos, f
     return alpha;
 }
 
-// A world vector in the hole's frame (x = e1, y = the spin axis, z = e2).
-kvec3 kerr_hole_frame(vec3 v) {
-    return kvec3(dot(v, P.disk.e1), dot(v, P.disk.normal), dot(v, P.disk.e2));
-}
-
 // The polarization of the n-th crossing (polarization.glsl; Hit.pol): the
 // photon there from its constants, the backward radial sign from the
 // crossing's radial point e (cases 1 and 2: r grows with sn^2, so the sign

@@ -89,8 +89,10 @@ impl Div for Dual {
     }
 }
 
-/// f and l_s . p at X (with their gradients), and r.
-fn field(x: DVec3, p: DVec3, a: f64) -> (Dual, Dual, f64) {
+/// f and l_X, l_Y, l_Z at X (with their gradients), and r: the metric's
+/// parts, the one place they are written (the polarization's transport,
+/// transport.rs, differentiates them too).
+pub(super) fn metric_parts(x: DVec3, a: f64) -> (Dual, [Dual; 3], f64) {
     let (xx, yy, zz) = (Dual::var(x.x, 0), Dual::var(x.y, 1), Dual::var(x.z, 2));
     let a2 = Dual::c(a * a);
     let w = xx * xx + yy * yy + zz * zz - a2;
@@ -99,9 +101,18 @@ fn field(x: DVec3, p: DVec3, a: f64) -> (Dual, Dual, f64) {
     let f = Dual::c(2.0) * r2 * r / (r2 * r2 + a2 * zz * zz);
     let ra = r2 + a2;
     let ac = Dual::c(a);
-    let lp = ((r * xx + ac * yy) * Dual::c(p.x) + (r * yy - ac * xx) * Dual::c(p.y)) / ra
-        + zz / r * Dual::c(p.z);
-    (f, lp, r.v)
+    let l = [(r * xx + ac * yy) / ra, (r * yy - ac * xx) / ra, zz / r];
+    (f, l, r.v)
+}
+
+/// f and l_s . p at X (with their gradients), and r.
+fn field(x: DVec3, p: DVec3, a: f64) -> (Dual, Dual, f64) {
+    let (f, [lx, ly, lz], r) = metric_parts(x, a);
+    (
+        f,
+        lx * Dual::c(p.x) + ly * Dual::c(p.y) + lz * Dual::c(p.z),
+        r,
+    )
 }
 
 /// The backward flow at (X, p): dX/ds = -dH/dp, dp/ds = dH/dX.

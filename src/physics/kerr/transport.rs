@@ -14,29 +14,13 @@
 
 use glam::DVec3;
 
-use super::schild::{Dual, backward, bl_r, kerr_schild_start};
+use super::schild::{backward, bl_r, kerr_schild_start, metric_parts};
 use super::{KerrDisk, KerrObserver, LocalFrame, PlacementError, observer_velocity, r_horizon};
 use crate::physics::polarization::{Emission, Seen, Stokes, boost, emitted_intensity, sky_basis};
 
-/// F and l_X, l_Y, l_Z with their gradients at X (M = 1, spin along +Z).
-fn metric_parts(x: DVec3, a: f64) -> (Dual, [Dual; 3]) {
-    let (xx, yy, zz) = (Dual::var(x.x, 0), Dual::var(x.y, 1), Dual::var(x.z, 2));
-    let a2 = Dual::c(a * a);
-    let w = xx * xx + yy * yy + zz * zz - a2;
-    let r2 = (w + (w * w + Dual::c(4.0 * a * a) * zz * zz).sqrt()) * Dual::c(0.5);
-    let r = r2.sqrt();
-    let f = Dual::c(2.0) * r2 * r / (r2 * r2 + a2 * zz * zz);
-    let ra = r2 + a2;
-    let ac = Dual::c(a);
-    (
-        f,
-        [(r * xx + ac * yy) / ra, (r * yy - ac * xx) / ra, zz / r],
-    )
-}
-
 /// The metric's inner product of two vectors at X.
 fn dot(x: DVec3, a: f64, u: [f64; 4], v: [f64; 4]) -> f64 {
-    let (f, l) = metric_parts(x, a);
+    let (f, l, _) = metric_parts(x, a);
     let lv = |v: [f64; 4]| v[0] + l[0].v * v[1] + l[1].v * v[2] + l[2].v * v[3];
     -u[0] * v[0] + u[1] * v[1] + u[2] * v[2] + u[3] * v[3] + f.v * lv(u) * lv(v)
 }
@@ -52,7 +36,7 @@ fn raise(f: f64, l: [f64; 4], v: [f64; 4]) -> [f64; 4] {
 /// photon `p` (covector), with g = eta + F l l:
 /// (1/2)(d_m g_(la) f^l p^a + p^a d_a g_(lm) f^l - f^l d_l g_(ma) p^a).
 pub(super) fn transport_rate(x: DVec3, a: f64, p: [f64; 4], c: [f64; 4]) -> [f64; 4] {
-    let (fd, ld) = metric_parts(x, a);
+    let (fd, ld, _) = metric_parts(x, a);
     let l = [1.0, ld[0].v, ld[1].v, ld[2].v];
     let (pu, cu) = (raise(fd.v, l, p), raise(fd.v, l, c));
     let contract = |u: [f64; 4]| l[0] * u[0] + l[1] * u[1] + l[2] * u[2] + l[3] * u[3];
