@@ -192,7 +192,11 @@ void main() {
     if (px.x >= w || px.y >= hgt) return;
 #endif
 
+#ifdef GEODESIC_AOV
+    PixelRay ray = camera_ray(POLARIZATION == POL_STOKES ? pol_tile(px) : px);
+#else
     PixelRay ray = camera_ray(px);
+#endif
 
     // The volume's sample offset: per pixel, and per accumulated frame (salted
     // by the sub-pixel jitter, zero for a single offscreen frame) so the

@@ -71,3 +71,11 @@ pub const COMPOSITE_HDR: &[u8] =
 pub const ACCUMULATE: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/accumulate.comp.spv"));
 /// Automatic exposure metering (`shaders/exposure.comp`).
 pub const EXPOSURE: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/exposure.comp.spv"));
+/// The telescope's beam over the Stokes image (`shaders/pol_beam.comp`).
+pub const POL_BEAM: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/pol_beam.comp.spv"));
+/// The polarized picture's scale (`shaders/pol_peak.comp`).
+pub const POL_PEAK: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/pol_peak.comp.spv"));
+/// The polarized picture's ticks (`shaders/pol_ticks.comp`).
+pub const POL_TICKS: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/pol_ticks.comp.spv"));
+/// The polarized picture: colour map and ticks (`shaders/pol_map.comp`).
+pub const POL_MAP: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/pol_map.comp.spv"));

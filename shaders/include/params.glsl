@@ -128,7 +128,9 @@ struct PolarizationParams {
     vec3 field;     float fraction;      // the field on (e_(r), e_(phi), e_(z)), unit; polarized share
     float spectral_index;                // alpha
     float emissivity_index;              // n
-    vec2 _pad;
+    uint tiles;                          // field models side by side (1: one picture)
+    float _pad;
+    vec4 fields[4];                      // each one's field, unit (xyz; `fields`)
 };
 
 struct RaymarchParams {

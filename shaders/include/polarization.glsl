@@ -190,4 +190,22 @@ vec4 pol_stokes(vec4 pol, float g) {
     return vec4(i, p * pol.xy, 0.0);
 }
 
+// Field models side by side (`fields`, up to four): pixel px's tile t covers
+// columns t W / n to (t + 1) W / n; the camera sees each tile as a whole
+// image of that width, with its own field. Returns px's column in its tile
+// (the image's own pixel where there is one model).
+uvec2 pol_tile(uvec2 px) {
+    uint n = clamp(P.polarization.tiles, 1u, 4u);
+    if (n == 1u) return px;
+    uint w = P.camera.size.x;
+    uint t = min(px.x * n / w, n - 1u);
+    while (t > 0u && t * w / n > px.x) --t;
+    while (t + 1u < n && (t + 1u) * w / n <= px.x) ++t;
+    uint x0 = t * w / n;
+    P.camera.size.x = (t + 1u) * w / n - x0;
+    P.camera.aspect = float(P.camera.size.x) / float(P.camera.size.y);
+    P.polarization.field = P.polarization.fields[t].xyz;
+    return uvec2(px.x - x0, px.y);
+}
+
 #endif

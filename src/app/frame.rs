@@ -237,6 +237,11 @@ impl Running {
             self.samples = 0;
             self.still = still;
         }
+        // The polarized picture is of the rays through the pixel centres
+        // (as `--aov stokes`): not refined.
+        if drawn.polarization.enabled {
+            return (0.0, 0.0);
+        }
         crate::camera::jitter(self.samples)
     }
 

@@ -10,6 +10,7 @@ pub mod composite;
 pub mod compute;
 pub mod copy;
 pub mod exposure;
+pub mod polarimetry;
 pub mod present;
 pub mod raymarch;
 

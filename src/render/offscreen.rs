@@ -42,6 +42,11 @@ impl Renderer {
                 "--aov {aov} describes thin-disk hits; this scene's disk is volumetric"
             )));
         }
+        if scene.polarization.enabled && matches!(kind, OutputKind::Hdr | OutputKind::HdrPost) {
+            return Err(Error::Usage(
+                "the polarized picture ([polarization] enabled = true) is drawn in 8 bits (.png or video); `--aov stokes --out F.exr` writes its Stokes parameters".into(),
+            ));
+        }
         if kind == OutputKind::Stokes
             && let Some(why) = scene
                 .spacetime()
@@ -99,7 +104,9 @@ impl Renderer {
         kind: OutputKind,
         spp: u32,
     ) -> Result<Frame> {
-        if spp <= 1 || kind.is_aov() {
+        // The AOVs and the polarized picture describe the rays through the
+        // pixel centres: one sample.
+        if spp <= 1 || kind.is_aov() || sample_scene(0).polarization.enabled {
             return self.render(&sample_scene(0), width, height, kind);
         }
         self.check_size(width, height)?;

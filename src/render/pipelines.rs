@@ -9,6 +9,7 @@ use crate::passes::accumulate::AccumulatePipeline;
 use crate::passes::bloom::BloomPipelines;
 use crate::passes::composite::CompositePipelines;
 use crate::passes::exposure::ExposurePipeline;
+use crate::passes::polarimetry::PolarimetryPipelines;
 use crate::passes::raymarch::RaymarchPipelines;
 use crate::vk::Gpu;
 
@@ -19,6 +20,7 @@ pub struct Pipelines {
     pub bloom: BloomPipelines,
     pub exposure: ExposurePipeline,
     pub composite: CompositePipelines,
+    pub polarimetry: PolarimetryPipelines,
 }
 
 impl Pipelines {
@@ -30,6 +32,7 @@ impl Pipelines {
             bloom: BloomPipelines::new(gpu)?,
             exposure: ExposurePipeline::new(gpu)?,
             composite: CompositePipelines::new(gpu)?,
+            polarimetry: PolarimetryPipelines::new(gpu)?,
         })
     }
 

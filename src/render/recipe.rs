@@ -8,7 +8,7 @@
 use super::Pipelines;
 use crate::frame::OutputKind;
 use crate::graph::{BufferHandle, Graph, ImageHandle};
-use crate::passes::{self, composite, raymarch};
+use crate::passes::{self, composite, polarimetry, raymarch};
 use crate::scene::{Bloom, Post, Scene};
 use crate::spacetime::Spacetime;
 
@@ -59,6 +59,18 @@ pub fn add_frame<'a>(
     output: OutputKind,
     accumulation: Option<Accumulation>,
 ) -> ImageHandle {
+    // The polarized picture draws the ray march's Stokes image (the AOV's
+    // rays and values) in place of its light.
+    let picture = match &source {
+        HdrSource::RayMarch { scene, size, .. }
+            if scene.polarization.enabled && !output.is_aov() =>
+        {
+            let out = graph.output_size();
+            Some(polarimetry::Picture::of(scene, *size, out))
+        }
+        _ => None,
+    };
+    let stokes = output == OutputKind::Stokes || picture.is_some();
     let hdr = match source {
         HdrSource::RayMarch {
             scene,
@@ -73,13 +85,13 @@ pub fn add_frame<'a>(
             raymarch::RaymarchInputs {
                 params,
                 images,
-                output: if output.is_aov() {
+                output: if output.is_aov() || stokes {
                     raymarch::RaymarchOutput::Geodesic
                 } else {
                     raymarch::RaymarchOutput::Beauty
                 },
                 size,
-                variant: if output == OutputKind::Stokes {
+                variant: if stokes {
                     variant.for_stokes()
                 } else if output == OutputKind::Geodesic {
                     variant.for_aov()
@@ -95,6 +107,10 @@ pub fn add_frame<'a>(
     };
     if output.is_aov() {
         return hdr;
+    }
+    if let Some(picture) = picture {
+        let out = graph.output_size();
+        return polarimetry::add_picture(graph, &pipelines.polarimetry, hdr, picture, out);
     }
     let hdr = match accumulation {
         Some(Accumulation { mut mean, index }) => {

@@ -71,6 +71,16 @@ pub const PRESETS: &[(&str, &str, &str)] = &[
         "the same spinning hole from higher up with the shifts on: the asymmetry",
         include_str!("presets/kerr-doppler.toml"),
     ),
+    (
+        "m87",
+        "M87* polarized as the EHT sees it: 163 degrees, a 20 microarcsecond beam, ticks",
+        include_str!("presets/m87.toml"),
+    ),
+    (
+        "fields",
+        "the polarized disk's field models side by side: radial, toroidal, vertical, spiral",
+        include_str!("presets/fields.toml"),
+    ),
 ];
 
 /// Names of the built-in presets, for `--help`.

@@ -6,6 +6,7 @@ pub mod animation;
 mod frames;
 pub mod load;
 mod locate;
+pub mod polarization;
 mod refusal;
 mod rule;
 pub mod schema;
@@ -16,6 +17,7 @@ pub use crate::spacetime::FALLING_MIN_R;
 pub use animation::{Animation, CameraPath, Keyframe};
 pub use frames::MAX_SEQUENCE_FRAMES;
 pub use load::{PRESETS, preset_names};
+pub use polarization::{Brightness, Colormap, Polarization, PolarizedView};
 pub use schema::*;
 pub use spacetime::SpacetimeKey;
 

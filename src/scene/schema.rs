@@ -13,6 +13,7 @@ pub const DEFAULT_IPD: f64 = 0.1;
 use serde::Deserialize;
 
 use super::animation::Animation;
+use super::polarization::Polarization;
 use crate::physics::observer::ObserverKind;
 
 /// Camera (the binding convention of docs/physics.md): `position`, `look_at`, `up`, `vfov_deg`.
@@ -306,38 +307,6 @@ impl Default for GridPlane {
             normal: [0.0, 0.0, -1.0],
             spacing: 2.0,
             size: 60.0,
-        }
-    }
-}
-
-/// `[polarization]`: the thin disk as a synchrotron-like emitter whose
-/// linear polarization is carried exactly to the camera
-/// (docs/polarization.md).
-#[derive(Clone, Debug, PartialEq, Deserialize, serde::Serialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct Polarization {
-    /// Draw the polarized view (Stokes I and ticks); `--aov stokes`
-    /// implies it.
-    pub enabled: bool,
-    /// The field on the gas's frame (e_(r), e_(phi), e_(z)); any non-zero
-    /// vector, used normalised.
-    pub field: [f64; 3],
-    /// alpha: I_nu proportional to nu^-alpha.
-    pub spectral_index: f64,
-    /// n: emissivity proportional to r^-n.
-    pub emissivity_index: f64,
-    /// The polarized share of the emitted light, 0 to 1.
-    pub fraction: f64,
-}
-
-impl Default for Polarization {
-    fn default() -> Self {
-        Polarization {
-            enabled: false,
-            field: [0.87, 0.5, 0.0],
-            spectral_index: 1.0,
-            emissivity_index: 2.0,
-            fraction: 0.7,
         }
     }
 }

@@ -21,7 +21,7 @@ pub const MIN_FPS: f64 = 0.01;
 pub const MAX_FPS: f64 = 1000.0;
 
 /// Finite and at most [`LIMIT`] in size.
-trait InRange {
+pub(super) trait InRange {
     fn in_range(&self) -> bool;
 }
 
@@ -32,7 +32,12 @@ impl InRange for f64 {
 }
 
 /// `ok`, or the failure.
-fn rule(ok: bool, path: &[Seg], value: impl std::fmt::Display, why: impl Into<String>) -> Check {
+pub(super) fn rule(
+    ok: bool,
+    path: &[Seg],
+    value: impl std::fmt::Display,
+    why: impl Into<String>,
+) -> Check {
     if ok { Ok(()) } else { fail(path, value, why) }
 }
 
@@ -45,7 +50,7 @@ fn finite3(path: &[Seg], v: &[f64; 3]) -> Check {
     )
 }
 
-fn direction(path: &[Seg], v: &[f64; 3]) -> Check {
+pub(super) fn direction(path: &[Seg], v: &[f64; 3]) -> Check {
     rule(
         v.iter().all(|x| x.in_range()) && DVec3::from(*v).length() >= 1e-9,
         path,
@@ -99,29 +104,6 @@ impl Scene {
         self.validate_rendering()?;
         self.validate_polarization()?;
         self.validate_animation()
-    }
-
-    fn validate_polarization(&self) -> Check {
-        let p = &self.polarization;
-        let key = |k| [Key("polarization"), Key(k)];
-        rule(
-            !p.enabled,
-            &key("enabled"),
-            true,
-            "the polarized picture (Stokes I with ticks) is not drawn yet; `render --aov stokes` writes the Stokes parameters with these keys",
-        )?;
-        direction(&key("field"), &p.field)?;
-        let within = |k, v: f64, lo: f64, hi: f64| {
-            rule(
-                v.in_range() && (lo..=hi).contains(&v),
-                &key(k),
-                v,
-                format!("must be in [{lo}, {hi}]"),
-            )
-        };
-        within("spectral_index", p.spectral_index, -1.0, 5.0)?;
-        within("emissivity_index", p.emissivity_index, -10.0, 10.0)?;
-        within("fraction", p.fraction, 0.0, 1.0)
     }
 
     fn validate_camera_and_holes(&self) -> Check {

@@ -202,7 +202,11 @@ pub struct PolarizationParams {
     pub fraction: f32,
     pub spectral_index: f32,
     pub emissivity_index: f32,
-    pub _pad: [f32; 2],
+    /// Field models side by side (1: one picture).
+    pub tiles: u32,
+    pub _pad: f32,
+    /// Each one's field, unit (xyz): `fields`, or `field` alone.
+    pub fields: [[f32; 4]; 4],
 }
 
 /// The whole block (a read-only storage buffer, written by the host).
@@ -319,12 +323,20 @@ impl RaymarchParams {
 
 fn polarization(scene: &Scene) -> PolarizationParams {
     let e = scene.emission();
+    let models = scene.polarization.models();
+    let mut fields = [[0.0; 4]; 4];
+    for (slot, f) in fields.iter_mut().zip(&models) {
+        let [x, y, z] = v3(glam::DVec3::from(*f).normalize());
+        *slot = [x, y, z, 0.0];
+    }
     PolarizationParams {
         field: v3(e.field),
         fraction: e.fraction as f32,
         spectral_index: e.spectral_index as f32,
         emissivity_index: e.emissivity_index as f32,
-        _pad: [0.0; 2],
+        tiles: models.len() as u32,
+        _pad: 0.0,
+        fields,
     }
 }
 
