@@ -29,6 +29,7 @@ pub mod input;
 pub mod output;
 pub mod passes;
 pub mod physics;
+pub mod polarimetry;
 pub mod render;
 pub mod scene;
 pub mod settings;

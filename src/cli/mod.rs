@@ -4,6 +4,7 @@
 pub mod outputs;
 pub mod profile;
 pub mod render;
+mod stokes;
 pub mod trace;
 
 use std::path::PathBuf;
@@ -131,6 +132,10 @@ pub enum Command {
         /// complete), e.g. after an interrupted run.
         #[arg(long, requires = "frames")]
         resume: bool,
+        /// With --aov stokes (a still): also write the polarimetric numbers
+        /// it prints (|m|_net, <|m|>, beta_2; through the beam and not) as JSON.
+        #[arg(long)]
+        json: Option<PathBuf>,
     },
     /// Plot photon paths in the hole's equatorial plane (SVG), with the horizon,
     /// the photon sphere and the ISCO.
@@ -250,6 +255,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
             spp,
             shutter,
             resume,
+            json,
         } => render::run(
             view,
             out,
@@ -260,6 +266,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, Error> {
                 spp,
                 shutter,
                 resume,
+                json,
             },
         ),
         Command::Trace { scene, out } => trace::run(scene.as_deref(), &out),

@@ -119,7 +119,7 @@ fn check_folder(out: &Output<'_>) -> Result<()> {
 }
 
 /// Whether `a` and `b` name the same existing file (through links too).
-fn same_file(a: &Path, b: &Path) -> bool {
+pub fn same_file(a: &Path, b: &Path) -> bool {
     let (Ok(ma), Ok(mb)) = (std::fs::metadata(a), std::fs::metadata(b)) else {
         return false;
     };

@@ -51,7 +51,7 @@ pub fn run_command(view: View, opts: Options) -> Result<ExitCode> {
     finish(renderer)
 }
 
-fn write_text(path: &std::path::Path, text: &str) -> Result<()> {
+pub(super) fn write_text(path: &std::path::Path, text: &str) -> Result<()> {
     output::write_atomically(path, |tmp| {
         std::fs::write(tmp, text).map_err(|source| Error::Io {
             path: path.to_owned(),

@@ -24,6 +24,8 @@ pub struct Options {
     pub shutter: Option<f64>,
     /// Skip the frames of a sequence whose files exist.
     pub resume: bool,
+    /// The Stokes numbers as JSON (`--json`).
+    pub json: Option<PathBuf>,
 }
 
 /// Set by Ctrl-C or SIGTERM: the render stops after the frame in hand (whose
@@ -86,6 +88,7 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
         spp,
         shutter,
         resume,
+        json,
     } = options;
     let View {
         scene,
@@ -140,6 +143,7 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
             width,
             height,
             spp,
+            json: None,
         };
         return job.video(range, container);
     }
@@ -162,6 +166,26 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
             aov.name()
         )));
     }
+    if let Some(path) = &json {
+        if aov != Aov::Stokes || frames.is_some() {
+            return Err(Error::Usage(
+                "--json writes the numbers of a still's --aov stokes (give --aov stokes and no --frames)".into(),
+            ));
+        }
+        Output {
+            flag: "--json",
+            path,
+            extensions: &["json"],
+            what: "JSON",
+        }
+        .check(&scene.input_files(), None)?;
+        if outputs::same_file(path, &out) {
+            return Err(Error::Usage(format!(
+                "--json {} and --out name the same file",
+                path.display()
+            )));
+        }
+    }
     // (A still with the shutter open samples frame 0's interval.)
     scene.check_frames(frames.as_ref().unwrap_or(&(0..1)), spp)?;
     let kind = match aov {
@@ -179,6 +203,7 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
         width,
         height,
         spp,
+        json: json.as_deref(),
     };
     match frames {
         Some(range) => job.sequence(range, resume),
@@ -208,6 +233,8 @@ struct Job<'a> {
     width: u32,
     height: u32,
     spp: u32,
+    /// Where the Stokes numbers go as JSON.
+    json: Option<&'a Path>,
 }
 
 impl Job<'_> {
@@ -237,6 +264,9 @@ impl Job<'_> {
             return Ok(ExitCode::from(INTERRUPTED));
         };
         output::write_frame(&frame, self.out, self.format)?;
+        if self.kind == crate::OutputKind::Stokes {
+            super::stokes::report(self.scene, &frame, self.json)?;
+        }
         log::info!("GPU: {}", frame.timings);
         println!(
             "wrote {} ({width}x{height}) in {:.0} ms on {}",

@@ -137,21 +137,13 @@ impl Picture {
         let p = &scene.polarization;
         let tiles = p.models().len() as u32;
         let tile_width = (src.0 / tiles).max(1);
-        // GM/c^2 per ray-march pixel, times the angle of GM/c^2: the beam's
-        // FWHM in pixels.
-        let per_pixel =
-            scene.image_plane_scale(&scene.camera, tile_width, src.1) * p.gravitational_angle_uas();
-        let fwhm = if per_pixel > 0.0 {
-            p.beam / per_pixel
-        } else {
-            0.0
-        };
-        let sigma = (fwhm / (8.0 * std::f64::consts::LN_2).sqrt()) as f32;
+        let sigma = scene.beam_sigma_pixels(tile_width, src.1) as f32;
+        let fwhm = sigma * (8.0 * std::f32::consts::LN_2).sqrt();
         let out_per_src = out.1 as f32 / src.1.max(1) as f32;
         Picture {
             tiles,
             sigma: if sigma.is_finite() { sigma } else { 0.0 },
-            beam_out: (fwhm as f32 * out_per_src).min(out.1 as f32),
+            beam_out: (fwhm * out_per_src).min(out.1 as f32),
             view: p.view.gpu_id(),
             map: p.colormap.gpu_id(),
             brightness: p.brightness.gpu_id(),

@@ -214,6 +214,29 @@ impl Scene {
         2.0 * d * camera.frame().pixel_angle(width, height)
     }
 
+    /// The beam's standard deviation in pixels of a picture (one field
+    /// model's) `width` x `height` pixels: 0 without a beam.
+    pub fn beam_sigma_pixels(&self, width: u32, height: u32) -> f64 {
+        let p = &self.polarization;
+        let per_pixel =
+            self.image_plane_scale(&self.camera, width, height) * p.gravitational_angle_uas();
+        let sigma = p.beam / per_pixel / (8.0 * std::f64::consts::LN_2).sqrt();
+        if per_pixel > 0.0 && sigma.is_finite() {
+            sigma
+        } else {
+            0.0
+        }
+    }
+
+    /// The columns of each field model's picture in an image `width` pixels
+    /// wide, left to right (as shaders/include/polarization.glsl's pol_tile).
+    pub fn picture_columns(&self, width: u32) -> Vec<(u32, u32)> {
+        let n = self.polarization.models().len() as u32;
+        (0..n)
+            .map(|t| (t * width / n, (t + 1) * width / n))
+            .collect()
+    }
+
     pub(super) fn validate_polarization(&self) -> Check {
         let p = &self.polarization;
         let key = |k| [Key("polarization"), Key(k)];
