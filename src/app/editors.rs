@@ -84,7 +84,43 @@ pub fn scene_editor(ui: &mut Ui, s: &mut Scene) {
     camera_and_holes(ui, s);
     disk_and_physics(ui, s);
     sky_and_plane(ui, s);
+    polarization(ui, s);
     post_and_quality(ui, s);
+}
+
+/// `[polarization]`: the picture switched on and off and its view, the
+/// field and the emitter's indices edited live.
+fn polarization(ui: &mut Ui, s: &mut Scene) {
+    use crate::scene::{Brightness, Colormap, PolarizedView};
+    egui::CollapsingHeader::new("polarization").show(ui, |ui| {
+        let p = &mut s.polarization;
+        ui.checkbox(&mut p.enabled, "enabled (Stokes I with the ticks)");
+        let views: Vec<_> = PolarizedView::ALL.iter().map(|v| (*v, v.name())).collect();
+        choice(ui, "view", &mut p.view, &views);
+        let maps: Vec<_> = Colormap::ALL.iter().map(|m| (*m, m.name())).collect();
+        choice(ui, "colormap", &mut p.colormap, &maps);
+        let scales: Vec<_> = Brightness::ALL.iter().map(|b| (*b, b.name())).collect();
+        choice(ui, "brightness", &mut p.brightness, &scales);
+        if p.fields.is_empty() {
+            vec3(ui, "field (r, phi, z)", &mut p.field, 0.01);
+        } else {
+            for (i, f) in p.fields.iter_mut().enumerate() {
+                vec3(ui, &format!("fields[{i}]"), f, 0.01);
+            }
+        }
+        num(ui, "spectral_index", &mut p.spectral_index, 0.01);
+        num(ui, "emissivity_index", &mut p.emissivity_index, 0.05);
+        num(ui, "fraction", &mut p.fraction, 0.01);
+        int(ui, "ticks", &mut p.ticks);
+        num(ui, "tick_cut", &mut p.tick_cut, 0.005);
+        num(ui, "beam (uas)", &mut p.beam, 0.1);
+        num(ui, "mass_msun", &mut p.mass_msun, 1e7);
+        num(ui, "distance_pc", &mut p.distance_pc, 1e4);
+        ui.label(format!(
+            "GM/c^2 = {:.3} microarcseconds",
+            p.gravitational_angle_uas()
+        ));
+    });
 }
 
 /// `[camera]` and `[[black_hole]]`.

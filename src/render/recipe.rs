@@ -65,12 +65,16 @@ pub fn add_frame<'a>(
         HdrSource::RayMarch { scene, size, .. }
             if scene.polarization.enabled && !output.is_aov() =>
         {
-            let out = graph.output_size();
+            let out = picture_size(graph.output_size(), *size);
             Some(polarimetry::Picture::of(scene, *size, out))
         }
         _ => None,
     };
     let stokes = output == OutputKind::Stokes || picture.is_some();
+    let source_size = match &source {
+        HdrSource::RayMarch { size, .. } => Some(*size),
+        HdrSource::Image(_) => None,
+    };
     let hdr = match source {
         HdrSource::RayMarch {
             scene,
@@ -109,7 +113,10 @@ pub fn add_frame<'a>(
         return hdr;
     }
     if let Some(picture) = picture {
-        let out = graph.output_size();
+        let out = match &source_size {
+            Some(size) => picture_size(graph.output_size(), *size),
+            None => graph.output_size(),
+        };
         return polarimetry::add_picture(graph, &pipelines.polarimetry, hdr, picture, out);
     }
     let hdr = match accumulation {
@@ -150,4 +157,13 @@ pub fn add_frame<'a>(
             mask_no_ray: settings.mask,
         },
     )
+}
+
+/// The polarized picture's size: the output's height at the ray march's
+/// aspect (the window's output is the whole swapchain, of which the blit
+/// fills the view's part; a picture squeezed into it would turn its ticks).
+fn picture_size(output: (u32, u32), ray_march: (u32, u32)) -> (u32, u32) {
+    let (w, h) = ray_march;
+    let width = (f64::from(output.1) * f64::from(w) / f64::from(h.max(1))).round() as u32;
+    (width.clamp(1, output.0.max(1)), output.1)
 }
