@@ -155,6 +155,12 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
             out.display()
         )));
     }
+    if scene.polarization.enabled && aov == Aov::Beauty && format == FileFormat::Exr {
+        return Err(Error::Usage(format!(
+            "--out {}: the polarized picture ([polarization] enabled = true) is drawn in 8 bits (.png or video); `--aov stokes` writes its Stokes parameters as EXR",
+            out.display()
+        )));
+    }
     if exr_post && (format != FileFormat::Exr || aov != Aov::Beauty) {
         return Err(Error::Usage(
             "--exr-post applies to the image (--aov beauty) written as .exr".into(),
