@@ -61,16 +61,23 @@ vec3 draw_ticks(vec3 c, vec2 p, uint t, float x0) {
 }
 
 void main() {
+    // The scale first, outside any branch: lavapipe reads a buffer at a
+    // uniform address once for the SIMD group only there.
+    vec4 peak = scale.peak;
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     if (px.x >= int(pc.out_size.x) || px.y >= int(pc.out_size.y)) return;
     vec2 p = vec2(px) + 0.5;
     vec4 st = stokes_at(p);
     float pol = length(st.yz);
-    float v = pc.view == VIEW_POLARIZED ? brightness(pol / max(scale.peak.y, 1e-30))
-            : pc.view == VIEW_FRACTION
-                ? (st.x > pc.cut * scale.peak.x && st.x > 0.0
-                   ? pol / (st.x * max(pc.fraction, 1e-6)) : 0.0)
-            : brightness(st.x / max(scale.peak.x, 1e-30));
+    // (Branches on push constants, not selects: both sides of a select run.)
+    float v;
+    if (pc.view == VIEW_POLARIZED) {
+        v = brightness(pol / max(peak.y, 1e-30));
+    } else if (pc.view == VIEW_FRACTION) {
+        v = st.x > pc.cut * peak.x && st.x > 0.0 ? pol / (st.x * max(pc.fraction, 1e-6)) : 0.0;
+    } else {
+        v = brightness(st.x / max(peak.x, 1e-30));
+    }
     vec3 c = colormap(pc.map, v);
     float x0, x1;
     uint t = tile_of(p.x, x0, x1);

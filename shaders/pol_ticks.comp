@@ -14,6 +14,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(binding = 1, rgba32f) uniform writeonly image2D tick_img;   // half-extent xy, m, drawn
 
 void main() {
+    vec4 peak = scale.peak;   // outside any branch (see pol_map.comp)
     ivec2 c = ivec2(gl_GlobalInvocationID.xy);
     ivec2 n = imageSize(tick_img);
     if (c.x >= n.x || c.y >= n.y) return;
@@ -24,9 +25,9 @@ void main() {
                   (float(c.y) + 0.5) * pc.spacing);
     vec4 st = stokes_at(q);
     float pol = length(st.yz);
-    bool drawn = q.x < x1 && q.y < float(pc.out_size.y) && st.x > pc.cut * scale.peak.x
-              && st.x > 0.0 && pol > 0.0 && scale.peak.y > 0.0;
-    float h = 0.6 * pc.spacing * pol / max(scale.peak.y, 1e-30);
+    bool drawn = q.x < x1 && q.y < float(pc.out_size.y) && st.x > pc.cut * peak.x
+              && st.x > 0.0 && pol > 0.0 && peak.y > 0.0;
+    float h = 0.6 * pc.spacing * pol / max(peak.y, 1e-30);
     float chi = 0.5 * atan(st.z, st.y);
     float m = pol / (max(st.x, 1e-30) * max(pc.fraction, 1e-6));
     imageStore(tick_img, c, drawn ? vec4(-h * sin(chi), -h * cos(chi), m, 1.0) : vec4(0.0));

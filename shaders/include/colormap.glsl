@@ -34,7 +34,8 @@ vec3 afmhot(float x) {
 }
 
 vec3 colormap(uint map, float x) {
-    return map == CMAP_AFMHOT ? afmhot(x) : inferno(x);
+    if (map == CMAP_AFMHOT) return afmhot(x);
+    return inferno(x);
 }
 
 // The ticks' colour for a fraction x in [0, 1] of the scale's top.

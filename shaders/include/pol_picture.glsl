@@ -56,6 +56,10 @@ uint tile_of(float x, out float x0, out float x1) {
 
 // The (blurred) Stokes parameters at output position p (pixels, continuous).
 vec4 stokes_at(vec2 p) {
+    // One picture, unblurred, at the ray march's size: its own texels.
+    if (pc.tiles == 1u && pc.tile_texels == 0u && pc.out_size == pc.src_size) {
+        return texelFetch(stokes, ivec2(p), 0);
+    }
     vec2 s = p * vec2(pc.src_size) / vec2(pc.out_size);
     uint t = tile_at(s.x);
     float x0 = tile_start(t), x1 = tile_start(t + 1u);
