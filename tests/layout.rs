@@ -197,7 +197,9 @@ fn raymarch_params_match_the_glsl_block_past_the_metric() {
             offset_of!(PolarizationParams, fraction),
             offset_of!(PolarizationParams, spectral_index),
             offset_of!(PolarizationParams, emissivity_index),
+            offset_of!(PolarizationParams, tiles),
             offset_of!(PolarizationParams, _pad),
+            offset_of!(PolarizationParams, fields),
         ],
     );
     // The block ends with its last group (no trailing padding either side).
@@ -205,6 +207,46 @@ fn raymarch_params_match_the_glsl_block_past_the_metric() {
         size_of::<RaymarchParams>(),
         offset_of!(RaymarchParams, polarization) + size_of::<PolarizationParams>()
     );
+}
+
+#[test]
+fn polarized_picture_push_constants_match_the_glsl_blocks() {
+    use blackhole::passes::polarimetry::{BeamPush, MapPush};
+    let beam: Vec<u32> = [
+        offset_of!(BeamPush, src_size),
+        offset_of!(BeamPush, dst_size),
+        offset_of!(BeamPush, axis),
+        offset_of!(BeamPush, step),
+        offset_of!(BeamPush, tiles),
+        offset_of!(BeamPush, tile_texels),
+        offset_of!(BeamPush, sigma),
+        offset_of!(BeamPush, radius),
+    ]
+    .iter()
+    .map(|&o| o as u32)
+    .collect();
+    assert_eq!(member_offsets(blackhole::shaders::POL_BEAM, "Push"), beam);
+    let map: Vec<u32> = [
+        offset_of!(MapPush, out_size),
+        offset_of!(MapPush, src_size),
+        offset_of!(MapPush, tiles),
+        offset_of!(MapPush, step),
+        offset_of!(MapPush, tile_texels),
+        offset_of!(MapPush, view),
+        offset_of!(MapPush, map),
+        offset_of!(MapPush, brightness),
+        offset_of!(MapPush, cells),
+        offset_of!(MapPush, spacing),
+        offset_of!(MapPush, cut),
+        offset_of!(MapPush, fraction),
+        offset_of!(MapPush, beam),
+    ]
+    .iter()
+    .map(|&o| o as u32)
+    .collect();
+    // The ticks and the map share one block (pol_picture.glsl).
+    assert_eq!(member_offsets(blackhole::shaders::POL_MAP, "Push"), map);
+    assert_eq!(member_offsets(blackhole::shaders::POL_TICKS, "Push"), map);
 }
 
 #[test]
