@@ -2,8 +2,8 @@
 // The polarized picture's ticks, one invocation a cell of the tick grid
 // (each picture of a side-by-side set has its own, from its left edge): the
 // tick at the cell's centre along the electric vector (chi east of north;
-// on the image north is up and east to the left), half as long as
-// 0.6 spacing times P over the picture's largest P, coloured by the fraction
+// on the image north is up and east to the left), its half-length 0.6
+// spacing times P over the picture's largest P, coloured by the fraction
 // m = P / I over the emitted fraction. No tick where Stokes I is below the
 // cut (a share of the brightest I) or P is 0. pol_map.comp draws them.
 

@@ -131,3 +131,34 @@ fn bloom_and_exposure_push_constants_match_the_glsl_blocks() {
         ],
     );
 }
+
+/// The integer after `#define NAME` in a GLSL source.
+fn glsl_define(src: &str, name: &str) -> u32 {
+    src.lines()
+        .find_map(|l| {
+            let mut w = l.split_whitespace();
+            (w.next() == Some("#define") && w.next() == Some(name))
+                .then(|| w.next().and_then(|v| v.parse().ok()))
+                .flatten()
+        })
+        .unwrap_or_else(|| panic!("#define {name} not found"))
+}
+
+#[test]
+fn the_picture_codes_in_rust_match_the_glsl_source() {
+    use blackhole::scene::{Brightness, Colormap, PolarizedView};
+    let picture = include_str!("../shaders/include/pol_picture.glsl");
+    let maps = include_str!("../shaders/include/colormap.glsl");
+    for v in PolarizedView::ALL {
+        let name = format!("VIEW_{}", v.name().to_uppercase());
+        assert_eq!(glsl_define(picture, &name), v.gpu_id(), "{name}");
+    }
+    for b in Brightness::ALL {
+        let name = format!("SCALE_{}", b.name().to_uppercase());
+        assert_eq!(glsl_define(picture, &name), b.gpu_id(), "{name}");
+    }
+    for m in Colormap::ALL {
+        let name = format!("CMAP_{}", m.name().to_uppercase());
+        assert_eq!(glsl_define(maps, &name), m.gpu_id(), "{name}");
+    }
+}

@@ -2,6 +2,8 @@
 // their push constants, the (blurred) Stokes image and where in it an output
 // pixel's Stokes parameters lie.
 
+#include "tiles.glsl"
+
 layout(binding = 0) uniform sampler2D stokes;
 layout(std430, binding = 2) readonly buffer Peak {
     vec4 peak;   // max I, max P (pol_peak.comp)
@@ -38,11 +40,7 @@ float tile_start(uint t) {
 
 // The tile of ray-march column x.
 uint tile_at(float x) {
-    uint c = uint(max(x, 0.0)), n = pc.tiles, w = pc.src_size.x;
-    uint t = min(c * n / w, n - 1u);
-    while (t > 0u && t * w / n > c) --t;
-    while (t + 1u < n && (t + 1u) * w / n <= c) ++t;
-    return t;
+    return tile_index(uint(max(x, 0.0)), pc.tiles, pc.src_size.x);
 }
 
 // The tile of output position x, and its range in output pixels.

@@ -17,6 +17,8 @@
 #ifndef POLARIZATION_GLSL
 #define POLARIZATION_GLSL
 
+#include "tiles.glsl"
+
 #include "params.glsl"
 #include "variant.glsl"
 
@@ -198,9 +200,7 @@ uvec2 pol_tile(uvec2 px) {
     uint n = clamp(P.polarization.tiles, 1u, 4u);
     if (n == 1u) return px;
     uint w = P.camera.size.x;
-    uint t = min(px.x * n / w, n - 1u);
-    while (t > 0u && t * w / n > px.x) --t;
-    while (t + 1u < n && (t + 1u) * w / n <= px.x) ++t;
+    uint t = tile_index(px.x, n, w);
     uint x0 = t * w / n;
     P.camera.size.x = (t + 1u) * w / n - x0;
     P.camera.aspect = float(P.camera.size.x) / float(P.camera.size.y);
