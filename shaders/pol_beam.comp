@@ -11,7 +11,9 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 0, rgba32f) uniform readonly image2D src;
+// (Sampled, read texel by texel: the picture's half floats or the AOV's
+// 32-bit ones alike.)
+layout(binding = 0) uniform sampler2D src;
 layout(binding = 1, rgba32f) uniform writeonly image2D dst;
 
 layout(push_constant) uniform Push {
@@ -51,7 +53,7 @@ void main() {
         total += w;
         if (i < lo || i >= hi) continue;
         ivec2 p = pc.axis == 0u ? ivec2(i, o.y) : ivec2(o.x, i);
-        sum += w * imageLoad(src, p);
+        sum += w * texelFetch(src, p, 0);
     }
     imageStore(dst, o, sum / total);
 }

@@ -7,7 +7,7 @@
 
 layout(local_size_x = 256) in;
 
-layout(binding = 0, rgba32f) uniform readonly image2D stokes;
+layout(binding = 0) uniform sampler2D stokes;
 layout(std430, binding = 1) writeonly buffer Peak {
     vec4 peak;   // max I, max P, 0, 0
 } result;
@@ -23,7 +23,7 @@ void main() {
     vec2 m = vec2(0.0);
     uint n = pc.size.x * pc.size.y;
     for (uint i = t; i < n; i += 256u) {
-        vec4 s = imageLoad(stokes, ivec2(i % pc.size.x, i / pc.size.x));
+        vec4 s = texelFetch(stokes, ivec2(i % pc.size.x, i / pc.size.x), 0);
         m = max(m, vec2(s.x, length(s.yz)));
     }
     best[t] = m;

@@ -5,7 +5,8 @@
 // kerr/, outside, in the ergoregion and between the horizons; a straight
 // line with gravity off; else the integrator of geodesic.glsl for several
 // holes) until it falls into a horizon, hits the disk or escapes to the
-// sky. Writes linear HDR, or the geodesic AOV.
+// sky. Writes linear HDR, the polarized picture's Stokes parameters
+// (POL_VIEW), or the geodesic or Stokes AOV.
 //
 // On a CPU driver, which runs every branch for every pixel, the work of one
 // hole may be split in two dispatches (SPLIT_STAGE; src/deferred.rs says
@@ -69,6 +70,17 @@ layout(std430, binding = RM_DEFERRED_DISPATCH) buffer DeferredDispatch {
 } deferred_dispatch;
 #endif
 
+#ifndef GEODESIC_AOV
+// The polarized picture (POL_VIEW): the ray march writes the Stokes
+// parameters I, Q, U of a disk hit (as the Stokes AOV does, in a half-float
+// image: the picture's passes draw them) in place of its light; the sky is
+// dark. Signed: NaN becomes 0 and each is held within a half float's range.
+vec4 picture_stokes(Hit hit) {
+    vec3 s = pol_stokes(hit.pol, hit.g).xyz;
+    return vec4(clamp(mix(s, vec3(0.0), isnan(s)), vec3(-HALF_MAX), vec3(HALF_MAX)), 1.0);
+}
+#endif
+
 #ifdef SPLIT_PASSES
 // The trace pass: lists this SIMD group's pixels that need the deferred pass
 // (one atomic per group; the dispatch grows to cover the list). Whole quads
@@ -98,8 +110,15 @@ void disk_pass() {
     if (i >= deferred_list.count) return;
     uint packed = deferred_list.px[i];
     ivec2 px = ivec2(packed & 0xffffu, packed >> 16u);
-    PixelRay ray = camera_ray(uvec2(px));
+    PixelRay ray = camera_ray(POLARIZATION == POL_VIEW ? pol_tile(uvec2(px)) : uvec2(px));
     Hit hit = metric_trace(ray.origin, ray.dir);
+    if (POLARIZATION == POL_VIEW) {
+        // The polarized picture's Stokes parameters where the disk is hit
+        // (the trace pass left zeros).
+        hit.g *= observer_g;
+        if (hit.outcome == OUT_DISK) imageStore(out_img, px, picture_stokes(hit));
+        return;
+    }
     vec3 behind = hit.trans < 0.003 ? vec3(0.0) : imageLoad(out_img, px).rgb;
     imageStore(out_img, px, vec4(storable(hit.glow + hit.trans * behind), 1.0));
 }
@@ -192,11 +211,8 @@ void main() {
     if (px.x >= w || px.y >= hgt) return;
 #endif
 
-#ifdef GEODESIC_AOV
-    PixelRay ray = camera_ray(POLARIZATION == POL_STOKES ? pol_tile(px) : px);
-#else
-    PixelRay ray = camera_ray(px);
-#endif
+    // (Field models side by side: each tile is an image of its own.)
+    PixelRay ray = camera_ray(POLARIZATION != POL_OFF ? pol_tile(px) : px);
 
     // The volume's sample offset: per pixel, and per accumulated frame (salted
     // by the sub-pixel jitter, zero for a single offscreen frame) so the
@@ -247,7 +263,12 @@ void main() {
         fp.y = oky ? ay : across;
     }
 #endif
-    vec3 color = path_color(hit, fp, pixel_angle);
+    vec4 value;
+    if (POLARIZATION == POL_VIEW) {
+        value = hit.outcome == OUT_DISK ? picture_stokes(hit) : vec4(0.0, 0.0, 0.0, 1.0);
+    } else {
+        value = vec4(storable(path_color(hit, fp, pixel_angle)), 1.0);
+    }
 #ifdef SPLIT_PASSES
     if (METRIC_SPLITS_RARE) {
         // The whole quad if any of its lanes was deferred and one lies in
@@ -266,6 +287,6 @@ void main() {
     if (!inside) return;
 #endif
     // No ray: black and transparent (alpha 0 reaches the PNG and the EXR).
-    imageStore(out_img, ivec2(px), ray.valid ? vec4(storable(color), 1.0) : vec4(0.0));
+    imageStore(out_img, ivec2(px), ray.valid ? value : vec4(0.0));
 #endif
 }

@@ -55,12 +55,9 @@ pub struct MapPush {
     pub beam: f32,
 }
 
-pub const BEAM_BINDINGS: [Binding; 2] =
-    [Binding::storage_image("src"), Binding::storage_image("dst")];
-pub const PEAK_BINDINGS: [Binding; 2] = [
-    Binding::storage_image("stokes"),
-    Binding::storage_buffer("Peak"),
-];
+pub const BEAM_BINDINGS: [Binding; 2] = [Binding::sampled("src"), Binding::storage_image("dst")];
+pub const PEAK_BINDINGS: [Binding; 2] =
+    [Binding::sampled("stokes"), Binding::storage_buffer("Peak")];
 pub const TICK_BINDINGS: [Binding; 3] = [
     Binding::sampled("stokes"),
     Binding::storage_image("tick_img"),
@@ -183,7 +180,7 @@ pub fn add_picture<'a>(
     let mut peak = graph.create_buffer("pol peak", 16);
     let size = [scaled.desc.width, scaled.desc.height];
     ComputePass::new(graph, "pol peak", &PEAK_BINDINGS)
-        .storage_image_read(&scaled, 0)
+        .sampled(&scaled, pipelines.sampler.sampler)
         .buffer_write(&mut peak, Access::ComputeStorageWrite)
         .dispatch(
             move || Ok(&pipelines.peak),
@@ -283,11 +280,14 @@ fn add_beam<'a>(
         };
         let pass = ComputePass::new(graph, name, &BEAM_BINDINGS);
         let pass = if axis == 0 {
-            pass.storage_image_read(stokes, 0)
+            pass.sampled(stokes, pipelines.sampler.sampler)
                 .storage_image(&mut x, Access::ComputeStorageWrite, 0)
         } else {
-            pass.storage_image_read(&x, 0)
-                .storage_image(&mut y, Access::ComputeStorageWrite, 0)
+            pass.sampled(&x, pipelines.sampler.sampler).storage_image(
+                &mut y,
+                Access::ComputeStorageWrite,
+                0,
+            )
         };
         pass.dispatch(
             move || Ok(&pipelines.beam),

@@ -60,7 +60,8 @@ pub fn add_frame<'a>(
     accumulation: Option<Accumulation>,
 ) -> ImageHandle {
     // The polarized picture draws the ray march's Stokes image (the AOV's
-    // rays and values) in place of its light.
+    // rays and values, from the beauty build: split where its frame is) in
+    // place of its light.
     let picture = match &source {
         HdrSource::RayMarch { scene, size, .. }
             if scene.polarization.enabled && !output.is_aov() =>
@@ -70,7 +71,7 @@ pub fn add_frame<'a>(
         }
         _ => None,
     };
-    let stokes = output == OutputKind::Stokes || picture.is_some();
+    let stokes = output == OutputKind::Stokes;
     let source_size = match &source {
         HdrSource::RayMarch { size, .. } => Some(*size),
         HdrSource::Image(_) => None,
@@ -97,6 +98,8 @@ pub fn add_frame<'a>(
                 size,
                 variant: if stokes {
                     variant.for_stokes()
+                } else if picture.is_some() {
+                    variant.for_picture()
                 } else if output == OutputKind::Geodesic {
                     variant.for_aov()
                 } else {

@@ -269,11 +269,15 @@ Hit metric_trace(vec3 x, vec3 d) {
             float g = kerr_disk_g(rc, af, lamf);
             float delay = 0.0;
 #ifndef GEODESIC_AOV
-            if (LIGHT_DELAY) {
-                delay = KERR_INSIDE ? kerr_inside_delay(rad, ang, cam, lamf, float(eta), t, rc)
-                                    : cam.turn * kerr_travel_time(rad, ang, af, lamf, t) / to_m;
+            // (The polarized picture takes the first crossing, as the
+            // Stokes AOV does.)
+            if (POLARIZATION != POL_VIEW) {
+                if (LIGHT_DELAY) {
+                    delay = KERR_INSIDE ? kerr_inside_delay(rad, ang, cam, lamf, float(eta), t, rc)
+                                        : cam.turn * kerr_travel_time(rad, ang, af, lamf, t) / to_m;
+                }
+                if (kerr_disk_light(hit, stop, rc, to_m, pos, g, delay) < 1.0) continue;
             }
-            if (kerr_disk_light(hit, stop, rc, to_m, pos, g, delay) < 1.0) continue;
 #endif
             hit.outcome = OUT_DISK;
             hit.pos = pos;

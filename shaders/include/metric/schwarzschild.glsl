@@ -142,6 +142,14 @@ bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 no
     if (POLARIZATION != POL_OFF) hit.pol = schwarzschild_polarization(path, phi, u, cb, c, pos, nrm, rs);
     return true;
 #else
+    if (POLARIZATION == POL_VIEW) {
+        // The polarized picture: the first crossing, as the Stokes AOV's.
+        hit.outcome = OUT_DISK;
+        hit.pos = pos;
+        hit.g = g;
+        hit.pol = schwarzschild_polarization(path, phi, u, cb, c, pos, nrm, rs);
+        return true;
+    }
     float t = P.disk.rotation_time;
     if (LIGHT_DELAY) t -= P.disk.speed * light_travel_time(path, phi, b_imp, rs);
     // (u and omega at hand: no division or square root again.)

@@ -212,6 +212,22 @@ impl Variant {
         }
     }
 
+    /// The same variant writing the polarized picture's Stokes parameters
+    /// (`POL_VIEW`): the beauty build, split where the beauty frame is (so
+    /// the picture costs what the frame does), with the first disk crossing
+    /// as the Stokes AOV's, no light delay and no structure, and the sky
+    /// dark.
+    pub fn for_picture(self) -> Variant {
+        Variant {
+            aov: false,
+            light_delay: false,
+            structure: false,
+            thin_crossings: 1,
+            polarization: glsl::POL_VIEW,
+            ..self
+        }
+    }
+
     /// The same variant writing the Stokes AOV.
     pub fn for_stokes(self) -> Variant {
         Variant {
