@@ -86,6 +86,10 @@ fn raymarch_params_match_the_glsl_block() {
             offset_of!(CameraParams, ipd),
             offset_of!(CameraParams, stereo),
             offset_of!(CameraParams, _pad),
+            offset_of!(CameraParams, position_lo),
+            offset_of!(CameraParams, right_lo),
+            offset_of!(CameraParams, up_lo),
+            offset_of!(CameraParams, forward_lo),
         ],
     );
     raymarch_struct_matches(

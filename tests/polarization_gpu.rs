@@ -128,6 +128,11 @@ pub fn gpu_stokes_matches_the_transported_reference() {
         (0.5, [1.0, 1.0, -6.0], "falling", 80.0),
         (0.99, [0.8, 0.1, 0.2], "zamo", 90.0),
         (0.7, [0.0, 500.0, -850.0], "static", 1.8),
+        // Far: 1e4 to 1e5 rs, the rays passing the hole at 1e-4 of that
+        // (the spinning hole's 64-bit build forms them in f64).
+        (0.7, [0.0, 6123.4, -19234.5], "static", 0.09),
+        (0.9, [7012.3, 2345.6, -6987.6], "falling", 0.18),
+        (-0.6, [0.0, 30123.4, -95234.5], "zamo", 0.018),
         (0.3, [0.0, 12.0, -0.5], "orbiting", 70.0),
         // The non-rotating hole's own closed form (its world-space path).
         (0.0, [1.0, 2.0, -15.0], "static", 50.0),

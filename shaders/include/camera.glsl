@@ -48,6 +48,7 @@ PixelRay pinhole(uvec2 px) {
     float sy = (1.0 - q.y * (2.0 / float(hgt))) * tan_half;
     PixelRay ray;
     ray.origin = P.camera.position;
+    pinhole_xy = vec2(sx, sy);
     ray.dir = normalize(P.camera.forward + sx * P.camera.right + sy * P.camera.up);
     ray.angle = 2.0 * tan_half / float(hgt);
     ray.valid = true;

@@ -52,6 +52,13 @@ struct CameraParams {
     float ipd;                           // ODS: the eyes' distance (rs)
     float stereo;                        // STEREO_*
     float pad[3];
+    // What the f32 position and axes above leave of the f64 ones (xyz; w
+    // unused): the spinning hole's 64-bit build forms a far camera's place
+    // and pinhole rays from their sums (kerr/camera.glsl, kerr_pixel_dir).
+    vec4 position_lo;
+    vec4 right_lo;
+    vec4 up_lo;
+    vec4 forward_lo;
 };
 
 // The observer's motion; its frame at a ray's origin comes from the metric

@@ -30,6 +30,11 @@ float rain_k2 = -1.0;
 // metric/kerr.glsl; 1 for every other metric).
 float kerr_zamo_g = 1.0;
 
+// A pinhole pixel's place on the image plane at distance 1 (along right
+// and up; pinhole() sets it): the spinning hole's 64-bit build forms the
+// ray's direction again from it (kerr/camera.glsl, kerr_pixel_dir).
+vec2 pinhole_xy = vec2(0.0);
+
 // Per-pixel offset of the volume's samples within their spacing, set by
 // main(): a fixed spacing would show as rings where rays run along the
 // density gradient; a hashed offset turns them into fine, stable grain.

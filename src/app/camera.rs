@@ -1,7 +1,9 @@
 //! The window's camera controller: an orbit around `look_at` in spherical
-//! coordinates (distance, azimuth, elevation, with +y up), panned by moving
-//! `look_at` in the view plane. It writes the scene's `[camera]` keys, so a
-//! saved scene renders offscreen exactly what the window showed.
+//! coordinates (distance, azimuth, elevation) about the scene camera's own
+//! up (its pole: +y in most scenes; the sky's north in `m87`, whose
+//! picture keeps north up as it turns), panned by moving `look_at` in the
+//! view plane. It writes the scene's `[camera]` keys, so a saved scene
+//! renders offscreen exactly what the window showed.
 
 use glam::DVec3;
 
@@ -30,8 +32,8 @@ pub fn min_distance_rs(spacetime: &Spacetime, allow_inside: bool) -> f64 {
     }
 }
 
-/// Highest elevation of the orbit (radians, just short of the pole): with
-/// +y as up, a camera exactly on the axis would have no defined right.
+/// Highest elevation of the orbit (radians, just short of the pole): a
+/// camera exactly on the pole would have no defined right.
 const MAX_ELEVATION: f64 = 1.55;
 
 /// An orbit camera.
@@ -39,10 +41,13 @@ const MAX_ELEVATION: f64 = 1.55;
 pub struct Orbit {
     pub target: DVec3,
     pub distance: f64,
-    /// Radians, around +y, 0 looking from -z toward +z.
+    /// Radians, around the pole, 0 on the side of -z (for the pole +y:
+    /// looking from -z toward +z).
     pub azimuth: f64,
-    /// Radians above the xz plane.
+    /// Radians above the plane at right angles to the pole.
     pub elevation: f64,
+    /// The orbit's axis and the camera's up (unit).
+    pub pole: DVec3,
     /// The scene's camera, for what the orbit keeps as it is: the field of
     /// view, the observer, the projection, stereo and eye distance (its
     /// position, look_at and up are the orbit's).
@@ -52,21 +57,23 @@ pub struct Orbit {
 }
 
 impl Orbit {
-    /// The orbit that reproduces `camera` (its up is taken as +y; a camera on
-    /// the y axis, like the top-down preset's, is tilted to the highest
-    /// elevation the orbit allows).
+    /// The orbit that reproduces `camera` about its up (a camera on the
+    /// pole is tilted to the highest elevation the orbit allows).
     pub fn from_camera(camera: &Camera) -> Self {
         let target = DVec3::from(camera.look_at);
         let d = DVec3::from(camera.position) - target;
         let distance = d.length().max(1e-6);
+        let pole = DVec3::from(camera.up).try_normalize().unwrap_or(DVec3::Y);
+        let (a, b) = azimuth_axes(pole);
         Orbit {
             target,
             distance,
-            azimuth: d.x.atan2(-d.z),
-            elevation: (d.y / distance)
+            azimuth: d.dot(b).atan2(d.dot(a)),
+            elevation: (d.dot(pole) / distance)
                 .clamp(-1.0, 1.0)
                 .asin()
                 .clamp(-MAX_ELEVATION, MAX_ELEVATION),
+            pole,
             lens: *camera,
             allow_inside: false,
         }
@@ -76,11 +83,12 @@ impl Orbit {
     pub fn camera(&self) -> Camera {
         let (se, ce) = self.elevation.sin_cos();
         let (sa, ca) = self.azimuth.sin_cos();
-        let offset = DVec3::new(ce * sa, se, -ce * ca) * self.distance;
+        let (a, b) = azimuth_axes(self.pole);
+        let offset = (ce * (ca * a + sa * b) + se * self.pole) * self.distance;
         Camera {
             position: (self.target + offset).to_array(),
             look_at: self.target.to_array(),
-            up: [0.0, 1.0, 0.0],
+            up: self.pole.to_array(),
             ..self.lens
         }
     }
@@ -111,8 +119,19 @@ impl Orbit {
     }
 }
 
-/// The three preset views: front (just above the disk), top (down the
-/// axis) and a free three-quarter view, at the current distance.
+/// The directions of azimuth 0 and 90 degrees about `pole`: -z and +x for
+/// the pole +y (-z made perpendicular to the pole, or +x where the pole
+/// is along z).
+fn azimuth_axes(pole: DVec3) -> (DVec3, DVec3) {
+    let a = (DVec3::NEG_Z - pole * -pole.z)
+        .try_normalize()
+        .unwrap_or_else(|| (DVec3::X - pole * pole.x).normalize());
+    (a, a.cross(pole))
+}
+
+/// The three preset views about +y (the disk's usual axis): front (just
+/// above the disk), top (down the axis) and a free three-quarter view, at
+/// the current distance.
 pub fn preset_view(which: u8, current: &Orbit) -> Orbit {
     let (azimuth, elevation) = match which {
         1 => (0.0, 3f64.to_radians()),
@@ -123,6 +142,7 @@ pub fn preset_view(which: u8, current: &Orbit) -> Orbit {
         azimuth,
         elevation,
         target: DVec3::ZERO,
+        pole: DVec3::Y,
         ..*current
     }
 }
@@ -138,6 +158,35 @@ mod tests {
         for i in 0..3 {
             assert!((back.position[i] - cam.position[i]).abs() < 1e-9);
         }
+    }
+
+    /// The m87 preset's picture keeps the sky's north up as it turns: the
+    /// orbit reproduces its camera, up and all, and a drag turns the camera
+    /// about that up.
+    #[test]
+    fn the_orbit_turns_about_the_cameras_own_up() {
+        let m87 = crate::scene::Scene::load("m87").expect("preset");
+        let o = Orbit::from_camera(&m87.camera);
+        let back = o.camera();
+        for i in 0..3 {
+            assert!((back.position[i] - m87.camera.position[i]).abs() < 1e-6 * o.distance);
+            assert!((back.up[i] - DVec3::from(m87.camera.up).normalize()[i]).abs() < 1e-12);
+        }
+        let mut turned = o;
+        turned.rotate(120.0, 0.0, 360.0);
+        let cam = turned.camera();
+        let up = DVec3::from(m87.camera.up).normalize();
+        let d0 = DVec3::from(m87.camera.position);
+        let d1 = DVec3::from(cam.position);
+        assert!(
+            (d1.dot(up) - d0.dot(up)).abs() < 1e-6 * o.distance,
+            "about the up"
+        );
+        assert!(d1.distance(d0) > 0.5 * o.distance, "turned");
+        assert_eq!(cam.up, up.to_array());
+        let mut scene = m87.clone();
+        scene.camera = cam;
+        scene.check().expect("the turned camera passes validation");
     }
 
     #[test]

@@ -6,6 +6,7 @@
 #define KERR_CAMERA_GLSL
 
 #include "params.glsl"
+#include "ray_state.glsl"
 #include "kerr/precision.glsl"
 
 // The spin a* as its two f32 halves (params.rs): exact to f64.
@@ -27,8 +28,78 @@ struct KerrCamera {
 };
 
 // A world vector in the hole's frame (x = e1, y = the spin axis, z = e2).
+// In the 64-bit build the frame is made orthonormal in f64 (e2 = e1 x n,
+// as the host's disk_basis), so that the camera's place and its rays turn
+// into it rigidly (a skew of 1e-7 would move a far camera's rays by 1e-7
+// of its distance across).
+#ifdef KERR_F32_ROOTS
 kvec3 kerr_hole_frame(vec3 v) {
     return kvec3(dot(v, P.disk.e1), dot(v, P.disk.normal), dot(v, P.disk.e2));
+}
+#else
+kvec3 kerr_hole_frame(dvec3 v) {
+    dvec3 n = normalize(dvec3(P.disk.normal));
+    dvec3 e1 = dvec3(P.disk.e1);
+    e1 = normalize(e1 - dot(e1, n) * n);
+    return dvec3(dot(v, e1), dot(v, n), dot(v, cross(e1, n)));
+}
+
+kvec3 kerr_hole_frame(vec3 v) {
+    return kerr_hole_frame(dvec3(v));
+}
+#endif
+
+// The camera's place (world, from the hole) and the coordinate direction
+// of its ray d, in kreal. In the 64-bit build a pinhole's are formed again
+// from the f64 position and axes (their f32 parts and what those leave,
+// params.glsl) and the pixel's place on the image plane: far out (1e4 rs)
+// a ray passes the hole at 1e-4 of the camera's distance, and a 32-bit
+// direction or place would move it by 1e-3 rs. The observer's aberration
+// as observer_to_coordinate's (none for the falling camera between the
+// horizons, whose frame is its own).
+kvec3 kerr_camera_rel(vec3 rel) {
+#ifndef KERR_F32_ROOTS
+    if (PROJECTION == PROJ_PINHOLE) {
+        return dvec3(P.camera.position) - dvec3(P.metric.holes[0].xyz) + dvec3(P.camera.position_lo.xyz);
+    }
+#endif
+    return kvec3(rel);
+}
+
+#ifndef KERR_F32_ROOTS
+// A camera axis in f64: its f32 part and what that leaves.
+dvec3 camera_axis64(vec3 hi, vec4 lo) {
+    return dvec3(hi) + dvec3(lo.xyz);
+}
+#endif
+
+// The pixel's direction in the observer's own frame (d_obs, as the
+// projection gave it), in kreal.
+kvec3 kerr_observer_dir(vec3 d_obs) {
+#ifndef KERR_F32_ROOTS
+    if (PROJECTION == PROJ_PINHOLE) {
+        return normalize(camera_axis64(P.camera.forward, P.camera.forward_lo)
+                         + double(pinhole_xy.x) * camera_axis64(P.camera.right, P.camera.right_lo)
+                         + double(pinhole_xy.y) * camera_axis64(P.camera.up, P.camera.up_lo));
+    }
+#endif
+    return kvec3(d_obs);
+}
+
+kvec3 kerr_pixel_dir(vec3 d) {
+#ifndef KERR_F32_ROOTS
+    if (PROJECTION == PROJ_PINHOLE) {
+        dvec3 dir = kerr_observer_dir(d);
+        dvec3 beta = dvec3(P.observer.velocity);
+        double b2 = dot(beta, beta);
+        if (!KERR_INSIDE && OBSERVER_MOVES && int(P.observer.kind) != OBS_FLAT && b2 > 0.0) {
+            double gam = 1.0 / sqrt(1.0 - b2), bd = dot(beta, dir);
+            dir = normalize((dir / gam - beta + (gam / (gam + 1.0)) * bd * beta) / (1.0 - bd));
+        }
+        return dir;
+    }
+#endif
+    return kvec3(d);
 }
 
 // The flat triad (e_r, e_theta, e_phi) at the camera's place, in the
@@ -50,8 +121,8 @@ void kerr_place(vec3 rel, vec3 d, inout KerrCamera k, out kreal s, out kvec3 dtr
     k.a = a;
     // Lengths in M = rs / 2: position and direction in the hole's frame.
     k.to_m = 2.0 / kreal(P.metric.holes[0].w);
-    kvec3 p = k.to_m * kerr_hole_frame(rel);
-    kvec3 dd = normalize(kerr_hole_frame(d));
+    kvec3 p = k.to_m * kerr_hole_frame(kerr_camera_rel(rel));
+    kvec3 dd = normalize(kerr_hole_frame(kerr_pixel_dir(d)));
     // On the spin axis phi is undefined and lambda = 0 for every ray: the
     // camera moves 1e-6 of its distance off the axis, where the near-axis
     // form (the partner of Pi(-N), N ~ 1 / lambda^2) carries each ray's

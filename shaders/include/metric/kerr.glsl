@@ -19,7 +19,10 @@
 // azimuth) runs in 32-bit floats, whose 1e-7 relative error keeps the
 // escape direction within 1e-5 rad and the disk radius within 2e-4 rs
 // (tests/kerr_gpu.rs); the geodesic AOV takes an escaping path's I_phi and
-// Mino time in 64 bits too (KERR_ESCAPE64). A device without 64-bit floats
+// Mino time in 64 bits too (KERR_ESCAPE64). The camera's place and a
+// pinhole's rays enter in 64 bits as well (kerr/camera.glsl,
+// kerr_pixel_dir): from 1e4 rs a 32-bit ray would pass the hole 1e-3 rs
+// off. A device without 64-bit floats
 // gets the build with KERR_F32_ROOTS: the same path with kreal = float,
 // exact away from a thin band around the shadow's outline.
 //
@@ -169,10 +172,14 @@ vec4 kerr_polarization(KerrCamera cam, KerrRadial rad, KerrAngular ang, KerrPoin
     vec4 em = pol_emit(rc, af, pe);
     kvec3 er, et, ep;
     kerr_triad(cam, er, et, ep);
-    kvec3 dz = normalize(kerr_hole_frame(d));
+    kvec3 dz = normalize(kerr_hole_frame(kerr_pixel_dir(d)));
     pvec4 p = pvec4(1.0, -dot(dz, er), -dot(dz, et), -dot(dz, ep));
-    kvec3 dobs = normalize(kerr_hole_frame(pol_dir_observer));
+    kvec3 dobs = normalize(kerr_hole_frame(kerr_observer_dir(pol_dir_observer)));
+#ifdef KERR_F32_ROOTS
     kvec3 up = kerr_hole_frame(P.camera.up);
+#else
+    kvec3 up = kerr_hole_frame(camera_axis64(P.camera.up, P.camera.up_lo));
+#endif
     kvec3 nn = normalize(up - dot(up, dobs) * dobs);
     kvec3 ww = cross(nn, dobs);
     kvec3 beta = OBSERVER_MOVES ? kerr_hole_frame(P.observer.velocity) : kvec3(0.0);

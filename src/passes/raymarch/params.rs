@@ -40,6 +40,13 @@ pub struct CameraParams {
     /// `Stereo` as a number (`STEREO_*`).
     pub stereo: f32,
     pub _pad: [f32; 3],
+    /// What `position`, `right`, `up` and `forward` leave of their f64
+    /// values (xyz; w 0): the spinning hole's 64-bit build forms a far
+    /// camera's place and pinhole rays from the sums.
+    pub position_lo: [f32; 4],
+    pub right_lo: [f32; 4],
+    pub up_lo: [f32; 4],
+    pub forward_lo: [f32; 4],
 }
 
 /// Who holds the camera (`physics::observer`).
@@ -356,7 +363,17 @@ fn camera(scene: &Scene, frame: &FrameSpec) -> CameraParams {
         ipd: f.ipd as f32,
         stereo: f.stereo.gpu_id() as f32,
         _pad: [0.0; 3],
+        position_lo: lo(f.position),
+        right_lo: lo(f.right),
+        up_lo: lo(f.up),
+        forward_lo: lo(f.forward),
     }
+}
+
+/// What `v3(v)` leaves of v: v - f64(f32(v)) (w 0).
+fn lo(v: DVec3) -> [f32; 4] {
+    let r = v - v.as_vec3().as_dvec3();
+    [r.x as f32, r.y as f32, r.z as f32, 0.0]
 }
 
 fn observer(scene: &Scene, spacetime: &Spacetime) -> ObserverParams {
