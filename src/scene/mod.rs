@@ -4,6 +4,7 @@
 
 pub mod animation;
 mod frames;
+pub mod keys;
 pub mod load;
 mod locate;
 pub mod polarization;

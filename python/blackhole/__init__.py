@@ -1,0 +1,86 @@
+"""blackhole: exact black-hole images in a notebook.
+
+The renderer's scenes, stills (uint8 sRGB or float32 linear HDR), AOVs and
+per-pass timings as numpy arrays, and the f64 physics of a hole (horizons,
+photon orbits, ISCO) without a GPU. docs/python.md is the guide::
+
+    import blackhole
+    scene = blackhole.Scene.preset("gargantua")
+    r = blackhole.Renderer()
+    img = r.render(scene, 640, 360)            # (360, 640, 4) uint8
+    aov = r.aov(scene, "geodesic", 64, 36)     # (36, 64, 4) float32
+"""
+
+from typing import Iterable, Iterator, Optional
+
+import numpy as np
+
+from ._blackhole import (
+    DeviceError,
+    Error,
+    FileError,
+    Renderer,
+    Scene,
+    critical_lambdas,
+    horizons,
+    isco,
+    photon_orbits,
+)
+
+__all__ = [
+    "DeviceError",
+    "Error",
+    "FileError",
+    "OUTCOMES",
+    "Renderer",
+    "Scene",
+    "critical_lambdas",
+    "horizons",
+    "isco",
+    "outcome",
+    "photon_orbits",
+    "sequence",
+]
+
+#: The geodesic AOV's outcome codes (channel 3): where each pixel's light
+#: path went (docs/physics.md, "The geodesic AOV").
+OUTCOMES = {
+    0: "escaped",
+    1: "captured",
+    2: "disk",
+    3: "no steps",
+    4: "no ray",
+    5: "other universe",
+}
+
+
+def outcome(aov: np.ndarray) -> np.ndarray:
+    """The outcome of each pixel of a geodesic AOV as a (H, W) array of
+    names (``OUTCOMES``): ``outcome(aov) == "disk"`` masks the disk."""
+    codes = np.asarray(aov)[..., 3].astype(np.int64)
+    names = np.array([OUTCOMES.get(i, "unknown") for i in range(max(OUTCOMES) + 1)] + ["unknown"])
+    return names[np.clip(codes, 0, len(names) - 1)]
+
+
+def sequence(
+    renderer: Renderer,
+    scene: Scene,
+    width: int,
+    height: int,
+    frames: Iterable[int],
+    *,
+    hdr: bool = False,
+    spp: int = 1,
+) -> Iterator[np.ndarray]:
+    """The frames of the scene's animation (indices as `render --frames`),
+    one array each, rendered as they are asked for."""
+    for i in frames:
+        yield renderer.render(scene, width, height, hdr=hdr, spp=spp, frame=int(i))
+
+
+def _sequence_method(self, scene, width, height, frames, *, hdr=False, spp=1):
+    return sequence(self, scene, width, height, frames, hdr=hdr, spp=spp)
+
+
+_sequence_method.__doc__ = sequence.__doc__
+Renderer.sequence = _sequence_method  # type: ignore[attr-defined]

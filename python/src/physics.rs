@@ -1,0 +1,74 @@
+//! The f64 physics a teacher asks for, without a GPU: a hole's horizons,
+//! photon orbits, ISCO and the shadow's critical rays, from the crate's
+//! spacetime door.
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+
+use blackhole::spacetime::radii;
+
+/// The spin and size as the scene keys allow them (|a*| <= 0.9999, rs > 0).
+fn checked(spin: f64, rs: f64) -> PyResult<()> {
+    if !(spin.is_finite() && spin.abs() <= 0.9999) {
+        return Err(PyValueError::new_err(format!(
+            "spin = {spin}: must be a number in [-0.9999, 0.9999]"
+        )));
+    }
+    if !(rs.is_finite() && rs > 0.0) {
+        return Err(PyValueError::new_err(format!(
+            "rs = {rs}: must be a positive number"
+        )));
+    }
+    Ok(())
+}
+
+/// The outer and inner horizons (Boyer-Lindquist r, in the unit of `rs`) of
+/// a hole spinning at `spin`: (rs, 0) at spin 0.
+#[pyfunction]
+#[pyo3(signature = (spin, rs = 1.0))]
+fn horizons(spin: f64, rs: f64) -> PyResult<(f64, f64)> {
+    checked(spin, rs)?;
+    Ok((radii::horizon(rs, spin), radii::inner_horizon(rs, spin)))
+}
+
+/// The equatorial circular photon orbits (prograde, retrograde), in the unit
+/// of `rs`: 1.5 rs both at spin 0.
+#[pyfunction]
+#[pyo3(signature = (spin, rs = 1.0))]
+fn photon_orbits(spin: f64, rs: f64) -> PyResult<(f64, f64)> {
+    checked(spin, rs)?;
+    Ok((
+        radii::photon_orbit(rs, spin, true),
+        radii::photon_orbit(rs, spin, false),
+    ))
+}
+
+/// The innermost stable circular orbit of a disk turning the way the
+/// scene's disk does (prograde for spin > 0): 3 rs at spin 0.
+#[pyfunction]
+#[pyo3(signature = (spin, rs = 1.0))]
+fn isco(spin: f64, rs: f64) -> PyResult<f64> {
+    checked(spin, rs)?;
+    Ok(radii::isco(rs, spin))
+}
+
+/// The photon constant lambda = L / E (in M) of the critical rays winding
+/// onto the equatorial photon orbits (prograde, retrograde): +-3 sqrt(3) at
+/// spin 0. Seen from far away in the disk's plane the shadow spans them:
+/// its width is |prograde - retrograde| M.
+#[pyfunction]
+fn critical_lambdas(spin: f64) -> PyResult<(f64, f64)> {
+    checked(spin, 1.0)?;
+    Ok((
+        radii::critical_lambda(spin, true),
+        radii::critical_lambda(spin, false),
+    ))
+}
+
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(horizons, m)?)?;
+    m.add_function(wrap_pyfunction!(photon_orbits, m)?)?;
+    m.add_function(wrap_pyfunction!(isco, m)?)?;
+    m.add_function(wrap_pyfunction!(critical_lambdas, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,207 @@
+"""The package against the command line: binding names, pixels equal to
+the CLI's PNG, the AOVs, every exception path, threads and Ctrl-C."""
+
+import os
+import signal
+import subprocess
+import sys
+import threading
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import blackhole
+
+ROOT = Path(__file__).resolve().parents[2]
+CLI = os.environ.get("BLACKHOLE_BIN", str(ROOT / "target" / "release" / "blackhole"))
+
+
+def cli_png(tmp_path, scene_args, width, height):
+    """The command line's PNG of the same scene, as an (H, W, 4) array."""
+    from PIL import Image
+
+    out = tmp_path / "cli.png"
+    subprocess.run(
+        [CLI, "render", *scene_args, "--width", str(width), "--height", str(height), "--out", str(out)],
+        check=True,
+        capture_output=True,
+    )
+    return np.asarray(Image.open(out).convert("RGBA"))
+
+
+def test_the_binding_names_exist():
+    for name in ["Scene", "Renderer", "Error", "DeviceError", "FileError", "OUTCOMES", "outcome",
+                 "horizons", "isco", "photon_orbits", "sequence"]:
+        assert hasattr(blackhole, name), name
+    assert issubclass(blackhole.DeviceError, blackhole.Error)
+    assert "gargantua" in blackhole.Scene.presets()
+
+
+def test_a_still_is_the_clis_png(renderer, tmp_path):
+    pytest.importorskip("PIL")
+    scene = blackhole.Scene.preset("gargantua")
+    img = renderer.render(scene, 96, 54)
+    assert img.shape == (54, 96, 4) and img.dtype == np.uint8 and img.flags["C_CONTIGUOUS"]
+    assert np.array_equal(img, cli_png(tmp_path, ["--scene", "gargantua"], 96, 54))
+
+
+def test_a_scene_from_toml_text_is_the_clis_file(renderer, tmp_path):
+    pytest.importorskip("PIL")
+    text = "[camera]\nposition = [2.0, 1.0, -12.0]\nvfov_deg = 40.0\n"
+    path = tmp_path / "s.toml"
+    path.write_text(text)
+    img = renderer.render(blackhole.Scene.from_toml(text), 64, 36)
+    assert np.array_equal(img, cli_png(tmp_path, ["--scene", str(path)], 64, 36))
+    assert np.array_equal(renderer.render(blackhole.Scene.load(path), 64, 36), img)
+
+
+def test_hdr_and_the_aovs_have_their_shapes(renderer):
+    scene = blackhole.Scene.preset("default")
+    hdr = renderer.render(scene, 64, 36, hdr=True)
+    assert hdr.shape == (36, 64, 4) and hdr.dtype == np.float32
+    assert np.isfinite(hdr).all() and hdr[..., :3].max() > 0
+    aov = renderer.aov(scene, "geodesic", 64, 36)
+    assert aov.shape == (36, 64, 4) and aov.dtype == np.float32
+    names = blackhole.outcome(aov)
+    assert {"escaped", "captured", "disk"} <= set(np.unique(names))
+    # The disk's pixels carry radii inside the annulus.
+    r = aov[..., 0][names == "disk"]
+    assert r.min() >= scene["disk.inner_radius"] - 1e-4 and r.max() <= scene["disk.outer_radius"] + 1e-4
+    stokes = renderer.aov(blackhole.Scene.preset("m87"), "stokes", 64, 36)
+    assert np.isfinite(stokes).all() and stokes[..., 0].max() > 0 and not stokes[..., 3].any()
+
+
+def test_keys_read_and_write_through_the_validation():
+    scene = blackhole.Scene.preset("gargantua")
+    assert scene["black_hole.0.spin"] == pytest.approx(0.998)
+    scene["camera.vfov_deg"] = 30
+    assert scene.get("camera.vfov_deg") == 30.0
+    wider = scene.with_key("camera.position", np.array([0.0, 2.0, -20.0]))
+    assert wider["camera.position"] == [0.0, 2.0, -20.0] and scene["camera.position"] != [0.0, 2.0, -20.0]
+    assert blackhole.Scene.from_toml(scene.to_toml()) == scene
+    assert isinstance(scene.to_dict()["camera"], dict)
+
+
+@pytest.mark.parametrize(
+    "key, value, words",
+    [
+        ("camera.vfov_deg", -5, ["camera.vfov_deg = -5"]),
+        ("camera.vfv", 5, ["vfv"]),
+        ("black_hole.0.spin", 2.0, ["spin"]),
+        ("disk.kind", "cloud", ["kind", "cloud"]),
+        ("camera.vfov_deg", None, ["camera.vfov_deg"]),
+        ("camera..up", 1, ["not a scene key"]),
+    ],
+)
+def test_a_bad_key_or_value_raises_value_error_and_keeps_the_scene(key, value, words):
+    scene = blackhole.Scene.preset("default")
+    before = scene.to_toml()
+    with pytest.raises(ValueError) as e:
+        scene[key] = value
+    for w in words:
+        assert w in str(e.value), str(e.value)
+    assert "\n" not in str(e.value)
+    assert scene.to_toml() == before
+
+
+def test_bad_calls_raise_value_error(renderer):
+    scene = blackhole.Scene.preset("default")
+    with pytest.raises(ValueError, match="preset"):
+        blackhole.Scene.preset("nope")
+    with pytest.raises(ValueError, match=":1: "):
+        blackhole.Scene.from_toml("[camera\n")
+    with pytest.raises(ValueError, match="AOVs"):
+        renderer.aov(scene, "depth", 8, 8)
+    with pytest.raises(ValueError):
+        renderer.render(scene, 0, 10)
+    with pytest.raises(ValueError):
+        renderer.render(scene, 100000, 100000)
+    with pytest.raises(ValueError, match="not both"):
+        renderer.render(scene, 8, 8, time=1.0, frame=2)
+    with pytest.raises(ValueError, match="finite"):
+        renderer.render(scene, 8, 8, time=float("nan"))
+    with pytest.raises(OverflowError):
+        renderer.render(scene, -1, 8)
+    with pytest.raises(TypeError):
+        renderer.render("default", 8, 8)
+    with pytest.raises(ValueError, match="spin"):
+        blackhole.horizons(1.5)
+    with pytest.raises(blackhole.FileError):
+        blackhole.Scene.preset("default").save("/nonexistent-dir/x.toml")
+    with pytest.raises(ValueError):
+        blackhole.Scene.load("/nonexistent-dir/x.toml")
+    # The renderer works after each of them.
+    assert renderer.render(scene, 8, 8).shape == (8, 8, 4)
+
+
+def test_a_closed_renderer_raises_device_error():
+    r = blackhole.Renderer()
+    r.close()
+    with pytest.raises(blackhole.DeviceError, match="closed"):
+        r.render(blackhole.Scene(), 8, 8)
+
+
+def test_frames_and_times_are_the_animations(renderer):
+    scene = blackhole.Scene.preset("plunge")
+    frames = list(renderer.sequence(scene, 32, 18, range(2)))
+    assert len(frames) == 2 and not np.array_equal(frames[0], frames[1])
+    at = renderer.render(scene, 32, 18, time=1.0 / scene.fps)
+    assert np.array_equal(at, frames[1])
+
+
+def test_one_renderer_serves_several_threads(renderer):
+    scene = blackhole.Scene.preset("default")
+    want = renderer.render(scene, 48, 27)
+    got = [None] * 4
+
+    def work(i):
+        got[i] = renderer.render(scene, 48, 27)
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert all(np.array_equal(g, want) for g in got)
+
+
+def test_the_physics_is_the_closed_form():
+    assert blackhole.horizons(0.0) == (1.0, 0.0)
+    outer, inner = blackhole.horizons(0.6, rs=2.0)
+    assert outer == pytest.approx(1 + 0.8) and inner == pytest.approx(1 - 0.8)
+    assert blackhole.isco(0.0) == pytest.approx(3.0)
+    assert blackhole.photon_orbits(0.0) == pytest.approx((1.5, 1.5))
+
+
+def test_ctrl_c_raises_keyboard_interrupt_within_a_sample():
+    script = (
+        "import sys, blackhole\n"
+        "r = blackhole.Renderer(); s = blackhole.Scene.preset('interstellar')\n"
+        "r.render(s, 16, 16)\n"
+        "print('started', flush=True)\n"
+        "try:\n"
+        "    r.render(s, 320, 180, spp=4096)\n"
+        "except KeyboardInterrupt:\n"
+        "    print('interrupted', flush=True); sys.exit(3)\n"
+    )
+    p = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
+    assert p.stdout.readline().strip() == "started"
+    import time
+
+    time.sleep(1.0)
+    p.send_signal(signal.SIGINT)
+    out, _ = p.communicate(timeout=60)
+    assert p.returncode == 3 and "interrupted" in out
+
+
+@pytest.mark.parametrize("name", ["spin_sweep", "shadow_width", "stokes_map"])
+def test_the_examples_run_headless(tmp_path, name):
+    pytest.importorskip("matplotlib")
+    out = tmp_path / f"{name}.png"
+    script = ROOT / "python" / "examples" / f"{name}.py"
+    env = dict(os.environ, MPLBACKEND="Agg")
+    run = subprocess.run([sys.executable, str(script), str(out)], env=env, capture_output=True, text=True,
+                         timeout=600)
+    assert run.returncode == 0, run.stderr
+    assert out.stat().st_size > 10_000
