@@ -21,6 +21,8 @@ import tempfile
 
 # (label, --scene, frames)
 SCENES = [("default", "default", 20), ("spin 0.9", None, 20), ("interstellar", "interstellar", 8)]
+if os.environ.get("PAIR_SCENES"):
+    SCENES = [(s, s, 10) for s in os.environ["PAIR_SCENES"].split(",")]
 
 
 def profile(binary, scene, size, frames, env):
