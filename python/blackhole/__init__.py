@@ -25,6 +25,7 @@ from ._blackhole import (
     horizons,
     isco,
     photon_orbits,
+    photon_paths,
 )
 
 __all__ = [
@@ -39,6 +40,7 @@ __all__ = [
     "isco",
     "outcome",
     "photon_orbits",
+    "photon_paths",
     "sequence",
 ]
 

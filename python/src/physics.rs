@@ -2,6 +2,7 @@
 //! photon orbits, ISCO and the shadow's critical rays, from the crate's
 //! spacetime door.
 
+use numpy::PyArrayMethods;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
@@ -65,10 +66,50 @@ fn critical_lambdas(spin: f64) -> PyResult<(f64, f64)> {
     ))
 }
 
+/// The photon paths `blackhole trace` draws for the scene's first hole, in
+/// its equatorial plane (units of rs, the hole at the origin, rays coming
+/// in from the left along +x): a list of dicts with the impact parameter
+/// `b` (rs), whether the path is `captured`, and its `pieces`, float64
+/// (N, 2) arrays of (x, y) inside the square of half-width `extent`.
+#[pyfunction]
+#[pyo3(signature = (scene, extent = 10.0))]
+fn photon_paths<'py>(
+    py: Python<'py>,
+    scene: &crate::scene::Scene,
+    extent: f64,
+) -> PyResult<Vec<Bound<'py, pyo3::types::PyDict>>> {
+    if !(extent.is_finite() && extent > 0.0 && extent <= 1e4) {
+        return Err(PyValueError::new_err(format!(
+            "extent = {extent}: must be a number of rs in (0, 1e4]"
+        )));
+    }
+    let paths =
+        py.allow_threads(|| blackhole::cli::trace::scene_photon_paths(&scene.inner, extent));
+    paths
+        .into_iter()
+        .map(|p| {
+            let d = pyo3::types::PyDict::new(py);
+            d.set_item("b", p.b)?;
+            d.set_item("captured", p.captured)?;
+            let pieces = p
+                .pieces
+                .iter()
+                .map(|piece| {
+                    let flat: Vec<f64> = piece.iter().flat_map(|&(x, y)| [x, y]).collect();
+                    numpy::PyArray1::from_vec(py, flat).reshape([piece.len(), 2])
+                })
+                .collect::<PyResult<Vec<_>>>()?;
+            d.set_item("pieces", pieces)?;
+            Ok(d)
+        })
+        .collect()
+}
+
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(horizons, m)?)?;
     m.add_function(wrap_pyfunction!(photon_orbits, m)?)?;
     m.add_function(wrap_pyfunction!(isco, m)?)?;
     m.add_function(wrap_pyfunction!(critical_lambdas, m)?)?;
+    m.add_function(wrap_pyfunction!(photon_paths, m)?)?;
     Ok(())
 }

@@ -56,6 +56,29 @@ def test_a_scene_from_toml_text_is_the_clis_file(renderer, tmp_path):
     assert np.array_equal(renderer.render(blackhole.Scene.load(path), 64, 36), img)
 
 
+def read_exr(path):
+    OpenEXR = pytest.importorskip("OpenEXR")
+    import Imath
+
+    f = OpenEXR.InputFile(str(path))
+    dw = f.header()["dataWindow"]
+    w, h = dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1
+    px = Imath.PixelType(Imath.PixelType.FLOAT)
+    return np.stack([np.frombuffer(f.channel(c, px), dtype=np.float32).reshape(h, w) for c in "RGBA"], axis=-1)
+
+
+@pytest.mark.parametrize("args, aov", [(["--scene", "gargantua"], None), (["--scene", "default", "--aov", "geodesic"], "geodesic")])
+def test_hdr_and_the_aov_are_the_clis_exr(renderer, tmp_path, args, aov):
+    out = tmp_path / "cli.exr"
+    subprocess.run([CLI, "render", *args, "--width", "64", "--height", "36", "--out", str(out)],
+                   check=True, capture_output=True)
+    want = read_exr(out)
+    scene = blackhole.Scene.preset(args[1])
+    got = renderer.aov(scene, aov, 64, 36) if aov else renderer.render(scene, 64, 36, hdr=True)
+    assert got.shape == want.shape
+    assert np.array_equal(got, want)
+
+
 def test_hdr_and_the_aovs_have_their_shapes(renderer):
     scene = blackhole.Scene.preset("default")
     hdr = renderer.render(scene, 64, 36, hdr=True)
@@ -172,6 +195,22 @@ def test_the_physics_is_the_closed_form():
     assert outer == pytest.approx(1 + 0.8) and inner == pytest.approx(1 - 0.8)
     assert blackhole.isco(0.0) == pytest.approx(3.0)
     assert blackhole.photon_orbits(0.0) == pytest.approx((1.5, 1.5))
+    assert blackhole.critical_lambdas(0.0) == pytest.approx((3 * 3**0.5, -3 * 3**0.5))
+
+
+@pytest.mark.parametrize("preset", ["default", "gargantua"])
+def test_the_trace_fan_is_arrays_of_paths(preset):
+    paths = blackhole.photon_paths(blackhole.Scene.preset(preset), extent=8.0)
+    assert any(p["captured"] for p in paths) and any(not p["captured"] for p in paths)
+    rh = blackhole.horizons(blackhole.Scene.preset(preset)["black_hole.0.spin"])[0]
+    for p in paths:
+        for piece in p["pieces"]:
+            assert piece.ndim == 2 and piece.shape[1] == 2 and piece.dtype == np.float64
+            assert np.abs(piece).max() <= 8.0 + 1e-9
+            # No point inside the horizon (x, y in rs, the hole at the origin).
+            assert np.hypot(piece[:, 0], piece[:, 1]).min() >= 0.99 * rh
+    with pytest.raises(ValueError, match="extent"):
+        blackhole.photon_paths(blackhole.Scene(), extent=-1.0)
 
 
 def test_ctrl_c_raises_keyboard_interrupt_within_a_sample():

@@ -93,6 +93,18 @@ fn clip_polyline(points: &[(f64, f64)], e: f64) -> Vec<Vec<(f64, f64)>> {
     pieces
 }
 
+/// The fan `trace` draws for the first hole of `scene`: the non-rotating
+/// hole's ([`photon_paths`]) or the spinning hole's equatorial paths
+/// ([`kerr_photon_paths`]), inside the square of half-width `extent` rs.
+pub fn scene_photon_paths(scene: &Scene, extent: f64) -> Vec<PhotonPath> {
+    let (_, spin) = scene.first_hole();
+    if spin == 0.0 {
+        photon_paths(scene, extent)
+    } else {
+        kerr_photon_paths(spin, extent)
+    }
+}
+
 /// Traces the fan for the first hole of `scene` (others are ignored: the plot
 /// shows one hole's geometry). Rays come in from the left, moving along +x.
 pub fn photon_paths(scene: &Scene, extent: f64) -> Vec<PhotonPath> {
