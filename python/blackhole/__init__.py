@@ -26,6 +26,7 @@ from ._blackhole import (
     isco,
     photon_orbits,
     photon_paths,
+    shadow_outline,
 )
 
 __all__ = [
@@ -42,6 +43,7 @@ __all__ = [
     "photon_orbits",
     "photon_paths",
     "sequence",
+    "shadow_outline",
 ]
 
 #: The geodesic AOV's outcome codes (channel 3): where each pixel's light

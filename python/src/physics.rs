@@ -66,6 +66,37 @@ fn critical_lambdas(spin: f64) -> PyResult<(f64, f64)> {
     ))
 }
 
+/// The shadow's outline seen from far away at `inclination` degrees from
+/// the spin axis: a float64 (2 n, 2) array of (alpha, beta) on the sky in
+/// units of `rs` (impact parameters: angles times the distance), closed
+/// around the shadow; alpha across the projected spin axis (Bardeen's
+/// sign: the side where light turns with the hole at alpha < 0), beta
+/// along it. A circle of radius 3 sqrt(3) / 2 rs at spin 0.
+#[pyfunction]
+#[pyo3(signature = (spin, inclination, n = 256, rs = 1.0))]
+fn shadow_outline<'py>(
+    py: Python<'py>,
+    spin: f64,
+    inclination: f64,
+    n: usize,
+    rs: f64,
+) -> PyResult<Bound<'py, numpy::PyArray2<f64>>> {
+    checked(spin, rs)?;
+    if !(inclination.is_finite() && (0.0..=180.0).contains(&inclination)) {
+        return Err(PyValueError::new_err(format!(
+            "inclination = {inclination}: must be in [0, 180] degrees"
+        )));
+    }
+    if !(4..=100_000).contains(&n) {
+        return Err(PyValueError::new_err(format!(
+            "n = {n}: must be in [4, 100000]"
+        )));
+    }
+    let pts = radii::shadow_outline(spin, inclination, n);
+    let flat: Vec<f64> = pts.iter().flat_map(|&(x, y)| [x * rs, y * rs]).collect();
+    numpy::PyArray1::from_vec(py, flat).reshape([pts.len(), 2])
+}
+
 /// The photon paths `blackhole trace` draws for the scene's first hole, in
 /// its equatorial plane (units of rs, the hole at the origin, rays coming
 /// in from the left along +x): a list of dicts with the impact parameter
@@ -111,5 +142,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(isco, m)?)?;
     m.add_function(wrap_pyfunction!(critical_lambdas, m)?)?;
     m.add_function(wrap_pyfunction!(photon_paths, m)?)?;
+    m.add_function(wrap_pyfunction!(shadow_outline, m)?)?;
     Ok(())
 }

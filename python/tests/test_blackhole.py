@@ -198,6 +198,31 @@ def test_the_physics_is_the_closed_form():
     assert blackhole.critical_lambdas(0.0) == pytest.approx((3 * 3**0.5, -3 * 3**0.5))
 
 
+def test_the_shadow_outline_meets_the_rendered_shadow(renderer):
+    circle = blackhole.shadow_outline(0.0, 60.0, n=64)
+    assert circle.shape == (128, 2) and np.allclose(np.hypot(*circle.T), 1.5 * 3**0.5)
+    # Edge-on, its ends on the equator are the equatorial critical rays.
+    edge = blackhole.shadow_outline(0.9, 90.0)
+    width = edge[:, 0].max() - edge[:, 0].min()
+    assert width == pytest.approx(abs(np.subtract(*blackhole.critical_lambdas(0.9))) / 2, rel=1e-9)
+    # From 60 degrees off the axis, 1000 rs away: the captured pixels'
+    # extent across and along the image matches the outline's to a pixel.
+    spin, inc, dist, vfov, n = 0.9, 60.0, 1000.0, 0.4, 256
+    t = np.radians(inc)
+    scene = blackhole.Scene.from_toml(
+        f"[[black_hole]]\nspin = {spin}\n[camera]\nposition = [0.0, {dist * np.cos(t)}, {-dist * np.sin(t)}]\n"
+        f"vfov_deg = {vfov}\nobserver = \"zamo\"\n[disk]\nkind = \"none\"\n[sky]\nkind = \"black\"\n"
+    )
+    captured = blackhole.outcome(renderer.aov(scene, "geodesic", n, n)) == "captured"
+    pixel = 2 * dist * np.tan(np.radians(vfov) / 2) / n
+    rows, cols = np.nonzero(captured)
+    outline = blackhole.shadow_outline(spin, inc)
+    assert (cols.max() - cols.min() + 1) * pixel == pytest.approx(np.ptp(outline[:, 0]), abs=2 * pixel)
+    assert (rows.max() - rows.min() + 1) * pixel == pytest.approx(np.ptp(outline[:, 1]), abs=2 * pixel)
+    with pytest.raises(ValueError, match="inclination"):
+        blackhole.shadow_outline(0.5, 200.0)
+
+
 @pytest.mark.parametrize("preset", ["default", "gargantua"])
 def test_the_trace_fan_is_arrays_of_paths(preset):
     paths = blackhole.photon_paths(blackhole.Scene.preset(preset), extent=8.0)

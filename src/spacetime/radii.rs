@@ -32,6 +32,19 @@ pub fn isco(rs: f64, spin: f64) -> f64 {
     0.5 * rs * kerr::r_isco(spin)
 }
 
+/// The shadow's outline of a hole spinning at `spin` seen from far away at
+/// `inclination_deg` from its spin axis: 2 `n` points (alpha, beta) on the
+/// sky in units of rs (impact parameters; an angle times the distance),
+/// closed around the shadow, alpha across the projected spin axis
+/// (Bardeen's sign: the side where light turns with the hole at alpha <
+/// 0), beta along it. A circle of radius 3 sqrt(3) / 2 rs at spin 0.
+pub fn shadow_outline(spin: f64, inclination_deg: f64, n: usize) -> Vec<(f64, f64)> {
+    kerr::shadow::outline(spin, inclination_deg.to_radians(), n)
+        .into_iter()
+        .map(|(x, y)| (0.5 * x, 0.5 * y))
+        .collect()
+}
+
 /// The equatorial photon constant lambda (in M) of the critical ray that
 /// winds onto the photon orbit on the `prograde` side, signed as the spin:
 /// -a + 6 cos(acos(-a) / 3) prograde, -a - 6 cos(acos(a) / 3) retrograde

@@ -24,6 +24,7 @@ pub mod mino;
 pub mod polarized;
 pub mod radial;
 pub mod schild;
+pub mod shadow;
 pub mod transport;
 
 use std::f64::consts::PI;
