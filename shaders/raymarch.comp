@@ -74,10 +74,9 @@ layout(std430, binding = RM_DEFERRED_DISPATCH) buffer DeferredDispatch {
 // The polarized picture (POL_VIEW): the ray march writes the Stokes
 // parameters I, Q, U of a disk hit (as the Stokes AOV does, in a half-float
 // image: the picture's passes draw them) in place of its light; the sky is
-// dark. Signed: NaN becomes 0 and each is held within a half float's range.
+// dark (storable_signed: Q and U are signed).
 vec4 picture_stokes(Hit hit) {
-    vec3 s = pol_stokes(hit.pol, hit.g).xyz;
-    return vec4(clamp(mix(s, vec3(0.0), isnan(s)), vec3(-HALF_MAX), vec3(HALF_MAX)), 1.0);
+    return vec4(storable_signed(pol_stokes(hit.pol, hit.g).xyz), 1.0);
 }
 #endif
 

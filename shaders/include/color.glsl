@@ -17,4 +17,10 @@ vec3 storable(vec3 c) {
     return clamp(mix(c, vec3(0.0), isnan(c)), vec3(0.0), vec3(HALF_MAX));
 }
 
+// The same for signed values (the polarized picture's Stokes Q and U):
+// NaN becomes 0, each held within +-HALF_MAX.
+vec3 storable_signed(vec3 c) {
+    return clamp(mix(c, vec3(0.0), isnan(c)), vec3(-HALF_MAX), vec3(HALF_MAX));
+}
+
 #endif
