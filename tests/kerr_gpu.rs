@@ -258,6 +258,15 @@ pub fn gpu_kerr_aov_matches_the_f64_closed_form() {
             "falling",
             "look_at = [0.0, 0.0, 0.0]\nvfov_deg = 0.18",
         ),
+        // The non-rotating hole far away: the AOV takes the spinning hole's
+        // 64-bit form at a* = 0 (the reference's a = 0 is held to the
+        // non-rotating closed form by tests/kerr.rs).
+        (
+            0.0,
+            [0.0, 6123.4, -19234.5],
+            "static",
+            "look_at = [0.0, 0.0, 0.0]\nvfov_deg = 0.09",
+        ),
     ] {
         let mut f = compare(spin, position, observer, aim, true);
         let (dir, radius, g) = (p99(&mut f.dir), p99(&mut f.radius), p99(&mut f.g));

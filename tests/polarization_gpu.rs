@@ -134,8 +134,11 @@ pub fn gpu_stokes_matches_the_transported_reference() {
         (0.9, [7012.3, 2345.6, -6987.6], "falling", 0.18),
         (-0.6, [0.0, 30123.4, -95234.5], "zamo", 0.018),
         (0.3, [0.0, 12.0, -0.5], "orbiting", 70.0),
-        // The non-rotating hole's own closed form (its world-space path).
+        // The non-rotating hole (the AOV takes the spinning hole's 64-bit
+        // form at a* = 0 where the device has 64-bit floats), near and far.
         (0.0, [1.0, 2.0, -15.0], "static", 50.0),
+        (0.0, [0.0, 6123.4, -19234.5], "static", 0.09),
+        (0.0, [8012.3, 2345.6, -5987.6], "falling", 0.18),
         (0.0, [0.5, 1.0, -5.0], "falling", 80.0),
         (0.0, [0.0, 9.0, -3.0], "orbiting", 70.0),
     ];

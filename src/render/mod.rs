@@ -267,6 +267,37 @@ impl Renderer {
         }
     }
 
+    /// The spacetime an AOV (`output`) of `scene` is traced in: one
+    /// non-rotating hole in the spinning hole's form at a* = 0 where the
+    /// device has 64-bit floats ([`Spacetime::spinning_form`]: its camera
+    /// and roots in f64, exact for far cameras and deep inside the
+    /// horizon), except for a `"flat"` camera (the comparison mapping) and
+    /// a Stokes AOV whose camera that form's polarization refuses (a
+    /// falling camera within 5 % of the horizon). Every other frame keeps
+    /// `spacetime`.
+    fn aov_form(
+        &self,
+        scene: &Scene,
+        spacetime: Arc<Spacetime>,
+        output: OutputKind,
+    ) -> Arc<Spacetime> {
+        let viewer = scene.camera.viewer();
+        if !output.is_aov()
+            || !self.features().kerr_f64
+            || viewer.observer == crate::physics::observer::ObserverKind::Flat
+        {
+            return spacetime;
+        }
+        match spacetime.spinning_form() {
+            Some(form)
+                if output != OutputKind::Stokes || form.polarization_refusal(&viewer).is_none() =>
+            {
+                Arc::new(form)
+            }
+            _ => spacetime,
+        }
+    }
+
     /// The parameter block of `scene` for `frame` (its image sky's width
     /// filled in from the loaded sky).
     fn block(
@@ -292,9 +323,11 @@ impl Renderer {
         scene: &Scene,
         size: (u32, u32),
         jitter: (f32, f32),
+        output: OutputKind,
     ) -> Result<FramePlan> {
         self.prepare_images(scene)?;
         let spacetime = self.spacetime_of(scene);
+        let spacetime = self.aov_form(scene, spacetime, output);
         let frame = raymarch::FrameSpec {
             jitter,
             ..raymarch::FrameSpec::new(size.0, size.1)

@@ -55,7 +55,7 @@ impl Renderer {
             return Err(Error::Usage(format!("--aov stokes {why}")));
         }
         let build = std::time::Instant::now();
-        let plan = self.start_frame(OFFSCREEN_SLOT, scene, (width, height), (0.0, 0.0))?;
+        let plan = self.start_frame(OFFSCREEN_SLOT, scene, (width, height), (0.0, 0.0), kind)?;
         self.offscreen(
             (width, height),
             kind,
@@ -141,7 +141,7 @@ impl Renderer {
             let build = std::time::Instant::now();
             let (jx, jy) = crate::camera::jitter(i + 1);
             let jitter = (jx as f32, jy as f32);
-            let plan = self.start_frame(OFFSCREEN_SLOT, scene, (width, height), jitter)?;
+            let plan = self.start_frame(OFFSCREEN_SLOT, scene, (width, height), jitter, output)?;
             let mean = self
                 .mean
                 .as_ref()

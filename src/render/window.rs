@@ -70,7 +70,13 @@ impl Renderer {
         self.check_size(target.desc.width, target.desc.height)?;
         let slot_index = self.next_slot;
         self.next_slot = (self.next_slot + 1) % self.slots.len();
-        let plan = self.start_frame(slot_index, scene, view.render_size, view.jitter)?;
+        let plan = self.start_frame(
+            slot_index,
+            scene,
+            view.render_size,
+            view.jitter,
+            OutputKind::Ldr,
+        )?;
 
         // The running mean follows the render size; a new one starts over.
         let mut sample = view.sample;

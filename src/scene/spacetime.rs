@@ -97,4 +97,33 @@ mod tests {
         let spinning = Scene::load("gargantua").expect("preset").spacetime();
         assert_eq!(spinning.gpu_path(), GpuPath::Kerr);
     }
+
+    #[test]
+    fn a_non_rotating_hole_has_a_spinning_form_at_spin_zero_with_the_same_observers() {
+        use crate::physics::observer::ObserverKind;
+        use glam::DVec3;
+        let one = Scene::default().spacetime();
+        let form = one.spinning_form().expect("one non-rotating hole");
+        assert_eq!(form.gpu_path(), GpuPath::Kerr);
+        assert_eq!(form.spin(), 0.0);
+        let hole = one.holes()[0];
+        assert!((form.horizon_radius(&hole) - one.horizon_radius(&hole)).abs() < 1e-15);
+        assert!((form.isco(&hole).unwrap_or(0.0) - one.isco(&hole).unwrap_or(1.0)).abs() < 1e-12);
+        for preset in ["binary", "no-gravity", "gargantua"] {
+            let s = Scene::load(preset).expect("preset").spacetime();
+            assert!(s.spinning_form().is_none(), "{preset}");
+        }
+        // The observers' velocities through the static (= ZAMO) frame agree,
+        // an orbiting one off the disk's plane on its great circle too.
+        for kind in [
+            ObserverKind::Static,
+            ObserverKind::Falling,
+            ObserverKind::Orbiting,
+        ] {
+            for at in [DVec3::new(0.0, 9.0, -3.0), DVec3::new(4.0, 0.0, -3.0)] {
+                let (a, b) = (one.observer(kind, at).beta, form.observer(kind, at).beta);
+                assert!((a - b).length() < 1e-12, "{kind:?} at {at}: {a} vs {b}");
+            }
+        }
+    }
 }

@@ -109,6 +109,24 @@ impl Spacetime {
         Spacetime { metric, axis }
     }
 
+    /// One non-rotating hole in the spinning hole's form at a* = 0 (Mino
+    /// time, Carlson's integrals; the same light paths): the AOVs take it
+    /// where the device has 64-bit floats, for its 64-bit camera and roots
+    /// (far cameras, the deep interior). None for every other metric.
+    pub fn spinning_form(&self) -> Option<Spacetime> {
+        let Metric::Schwarzschild(hole) = self.metric else {
+            return None;
+        };
+        Some(Spacetime {
+            metric: Metric::Kerr(SpinningHole {
+                hole,
+                spin: 0.0,
+                axis: self.axis.normalize(),
+            }),
+            axis: self.axis,
+        })
+    }
+
     /// The metric.
     pub fn metric(&self) -> &Metric {
         &self.metric
@@ -178,11 +196,19 @@ impl Spacetime {
     /// validation refuses such cameras).
     pub fn observer(&self, kind: ObserverKind, position: DVec3) -> Observer {
         if let Metric::Kerr(k) = &self.metric {
+            // At a* = 0 an orbiting observer off the disk's plane keeps the
+            // non-rotating hole's circular geodesic through its place (the
+            // spinning hole's turns about the axis at the Keplerian rate).
+            let beta = if k.spin == 0.0 && kind == ObserverKind::Orbiting {
+                Observer::new(kind, position, &[k.hole], self.axis, true).beta
+            } else {
+                k.observer_velocity(kind, position).unwrap_or(DVec3::ZERO)
+            };
             return Observer {
                 kind,
                 rhat: DVec3::Y,
                 lapse: 1.0,
-                beta: k.observer_velocity(kind, position).unwrap_or(DVec3::ZERO),
+                beta,
                 rain: None,
             };
         }
