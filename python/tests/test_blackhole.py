@@ -32,7 +32,7 @@ def cli_png(tmp_path, scene_args, width, height):
 
 def test_the_binding_names_exist():
     for name in ["Scene", "Renderer", "Error", "DeviceError", "FileError", "OUTCOMES", "outcome",
-                 "horizons", "isco", "photon_orbits", "sequence"]:
+                 "horizons", "isco", "photon_orbits", "sequence", "light_path", "shadow_outline"]:
         assert hasattr(blackhole, name), name
     assert issubclass(blackhole.DeviceError, blackhole.Error)
     assert "gargantua" in blackhole.Scene.presets()
@@ -221,6 +221,46 @@ def test_the_shadow_outline_meets_the_rendered_shadow(renderer):
     assert (rows.max() - rows.min() + 1) * pixel == pytest.approx(np.ptp(outline[:, 1]), abs=2 * pixel)
     with pytest.raises(ValueError, match="inclination"):
         blackhole.shadow_outline(0.5, 200.0)
+
+
+@pytest.mark.parametrize("preset", ["default", "gargantua"])
+def test_a_pixels_light_path_ends_where_its_geodesic_aov_says(renderer, preset):
+    scene = blackhole.Scene.preset(preset)
+    w, h = 24, 14
+    aov = renderer.aov(scene, "geodesic", w, h)
+    names = blackhole.outcome(aov)
+    hole = np.array(scene["black_hole.0.position"], dtype=float)
+    camera = np.array(scene["camera.position"], dtype=float)
+    seen = set()
+    for y in range(0, h, 3):
+        for x in range(0, w, 3):
+            path = blackhole.light_path(scene, x, y, w, h, samples=200)
+            pts = path["points"]
+            assert pts.dtype == np.float64 and pts.ndim == 2 and pts.shape[1] == 3
+            assert pts.flags["C_CONTIGUOUS"] and np.isfinite(pts).all()
+            assert np.allclose(pts[0], camera, atol=1e-9)
+            assert path["outcome"] == names[y, x], (x, y)
+            seen.add(path["outcome"])
+            if path["outcome"] == "disk":
+                # The AOV's radius (channel 0: Boyer-Lindquist r, rs) at the
+                # path's last point, in the disk's plane at sqrt(r^2 + a^2).
+                a = 0.5 * scene["black_hole.0.spin"]
+                r = np.sqrt(np.sum((path["end"] - hole) ** 2) - a * a)
+                assert np.allclose(pts[-1], path["end"], atol=1e-9)
+                assert abs(r - aov[y, x, 0]) < 1e-4 * r, (x, y, r, aov[y, x])
+    assert {"escaped", "disk"} <= seen, seen
+    with pytest.raises(ValueError, match="outside the 24x14 image"):
+        blackhole.light_path(scene, 24, 0, w, h)
+    with pytest.raises(ValueError, match="samples"):
+        blackhole.light_path(scene, 0, 0, w, h, samples=1)
+    with pytest.raises(ValueError, match="reach"):
+        blackhole.light_path(scene, 0, 0, w, h, reach=-1.0)
+
+
+def test_a_light_path_from_inside_the_horizon_is_refused():
+    scene = blackhole.Scene.from_toml('[camera]\nposition = [0.0, 0.2, -0.5]\nobserver = "falling"\n')
+    with pytest.raises(ValueError, match="outside the horizon"):
+        blackhole.light_path(scene, 3, 3, 8, 8)
 
 
 @pytest.mark.parametrize("preset", ["default", "gargantua"])

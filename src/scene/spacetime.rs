@@ -6,9 +6,10 @@
 use glam::DVec3;
 
 use super::{BlackHole, Camera, Scene, Stereo};
+use crate::physics::Disk;
 use crate::physics::Hole;
 use crate::physics::observer::Observer;
-use crate::spacetime::{Body, Emission, Spacetime, Viewer};
+use crate::spacetime::{Body, Emission, LightPath, Spacetime, Viewer};
 
 /// What a scene's spacetime is built from: the holes, gravity, the disk's
 /// normal. The renderer keeps its spacetime while this stays the same.
@@ -65,6 +66,74 @@ impl Scene {
     /// The camera's observer (the pixel-to-ray mapping and its redshift).
     pub fn observer(&self) -> Observer {
         self.spacetime().camera_observer(&self.camera.viewer())
+    }
+
+    /// The backward light path through the centre of pixel (`col`, `row`)
+    /// of a `width` x `height` image, as points (world) and how it ends,
+    /// asked of the spacetime door ([`Spacetime::light_path`]): `samples`
+    /// points, up to the thin disk, the horizon, or `reach` (world units)
+    /// from the first hole (by default twice the camera's distance, at
+    /// least 20 rs). Bad sizes, a pixel off the image or without a ray, and
+    /// a camera the door cannot trace from are refused by name.
+    pub fn light_path(
+        &self,
+        (col, row): (u32, u32),
+        (width, height): (u32, u32),
+        samples: usize,
+        reach: Option<f64>,
+    ) -> crate::Result<LightPath> {
+        let usage = |m: String| crate::Error::Usage(m);
+        if width == 0 || height == 0 || width > 65_536 || height > 65_536 {
+            return Err(usage(format!(
+                "light_path {width}x{height}: the image must be 1 to 65536 pixels a side"
+            )));
+        }
+        if col >= width || row >= height {
+            return Err(usage(format!(
+                "light_path pixel ({col}, {row}): outside the {width}x{height} image"
+            )));
+        }
+        if !(2..=1_000_000).contains(&samples) {
+            return Err(usage(format!(
+                "light_path samples = {samples}: must be in [2, 1000000]"
+            )));
+        }
+        self.check_image_size(width, height)?;
+        let ray = self
+            .camera
+            .frame()
+            .pixel_ray(col, row, width, height, (0.0, 0.0))
+            .ok_or_else(|| {
+                usage(format!(
+                    "light_path pixel ({col}, {row}): no ray there (outside the fisheye's circle)"
+                ))
+            })?;
+        let (centre, rs) = self
+            .black_holes
+            .first()
+            .map_or((DVec3::ZERO, 1.0), |h| (DVec3::from(h.position), h.rs));
+        let reach = match reach {
+            Some(r) if r.is_finite() && r > 0.0 && r <= 1e12 => r,
+            Some(r) => {
+                return Err(usage(format!(
+                    "light_path reach = {r}: must be a distance in (0, 1e12]"
+                )));
+            }
+            None => (2.0 * (ray.origin - centre).length()).max(20.0 * rs),
+        };
+        let disk = Disk {
+            normal: DVec3::from(self.disk.normal),
+            inner: self.disk.inner_radius,
+            outer: self.disk.outer_radius,
+        };
+        let thin = (self.disk.kind == super::DiskKind::Thin).then_some(&disk);
+        let viewer = Viewer {
+            position: ray.origin,
+            ..self.camera.viewer()
+        };
+        self.spacetime()
+            .light_path(thin, &viewer, ray.dir, reach, samples)
+            .map_err(|why| usage(format!("light_path {why}")))
     }
 }
 

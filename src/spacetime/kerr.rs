@@ -65,6 +65,33 @@ impl SpinningHole {
         }
     }
 
+    /// The backward ray from `x0` along `d` (the ZAMO's frame there, world
+    /// axes) as `samples` points (world), to the disk, to just outside the
+    /// horizon or to `reach` from the hole (world units), and how it ends.
+    pub fn path(
+        &self,
+        disk: Option<&Disk>,
+        x0: DVec3,
+        d: DVec3,
+        reach: f64,
+        samples: usize,
+    ) -> Option<(Vec<DVec3>, Outcome)> {
+        let local = self.local(x0 - self.hole.position);
+        let dir = self.local(d).normalize();
+        let kdisk = disk.map(|d| KerrDisk {
+            inner: d.inner / self.hole.rs,
+            outer: d.outer / self.hole.rs,
+        });
+        let path =
+            kerr::path::path_zamo(local, dir, self.spin, kdisk, reach / self.hole.rs, samples)?;
+        let points = path
+            .points
+            .iter()
+            .map(|p| self.hole.position + self.world(*p))
+            .collect();
+        Some((points, self.trace(disk, x0, d)))
+    }
+
     /// Whether the split ray march's trace pass leaves this ray to its second
     /// pass (`shaders/include/metric/kerr.glsl`, `KERR_COMMON_ONLY`): a polar
     /// motion that never crosses the equator, the radial case 4, or a path

@@ -17,6 +17,7 @@
 
 pub mod fall;
 pub mod kerr;
+pub mod path;
 pub mod placement;
 pub mod radii;
 
@@ -27,6 +28,7 @@ use glam::DVec3;
 pub use crate::physics::polarization::{Emission, Stokes};
 pub use fall::Fall;
 pub use kerr::SpinningHole;
+pub use path::LightPath;
 pub use placement::{EndRefusal, FALLING_MIN_R, Refusal};
 
 use crate::physics::observer::{Observer, ObserverKind};
@@ -345,7 +347,7 @@ impl Spacetime {
 
 /// A straight line from `x0` along `v0`: the first horizon it enters, the
 /// thin disk's annulus around the first hole, or the sky.
-fn trace_straight(holes: &[Hole], disk: Option<&Disk>, x0: DVec3, v0: DVec3) -> Outcome {
+pub(crate) fn trace_straight(holes: &[Hole], disk: Option<&Disk>, x0: DVec3, v0: DVec3) -> Outcome {
     let d = v0.normalize();
     // The first horizon along the line: (distance, hole).
     let mut first: Option<(f64, usize)> = None;

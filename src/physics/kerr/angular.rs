@@ -5,7 +5,7 @@
 
 use std::f64::consts::PI;
 
-use super::elliptic::{f_sc, k_of, pi_neg_continued, pi_sc, rf, rj, sn_cn_dn};
+use super::elliptic::{f_sc, k_of, pi_neg_continued, rf, rj, sn_cn_dn};
 
 /// cos(theta) = sqrt(u+) cn(psi | m), psi = w tau + s_theta (K - F_o).
 #[derive(Clone, Copy, Debug)]
@@ -112,6 +112,10 @@ impl Ordinary {
 #[derive(Clone, Copy, Debug)]
 pub struct Vortical {
     u_minus: f64,
+    /// 1 - n of the azimuth's characteristic n = m / (1 - u-), formed
+    /// without cancellation: it is ~ lambda^2 as the ray passes near the
+    /// axis (and 0 in f64 from 1 - n itself at lambda ~ 1e-8).
+    one_minus_n: f64,
     m: f64,
     k: f64,
     w: f64,
@@ -126,11 +130,16 @@ impl Vortical {
         let (a2up, a2um) = ((s - h) / 2.0, (-h - s) / 2.0);
         let (up, um) = (a2up / (a * a), a2um / (a * a));
         let m = 1.0 - um / up;
+        // 1 - u+ = 2 lambda^2 / (a^2 + eta + lambda^2 + s), exactly; 1 - n
+        // = u- (1 - u+) / (u+ (1 - u-)).
+        let one_minus_up = 2.0 * lambda * lambda / (a * a + eta + lambda * lambda + s);
+        let one_minus_n = um * one_minus_up / (up * (1.0 - um));
         let sn2 = ((cos_o * cos_o - um) * up / (cos_o * cos_o * (up - um))).clamp(0.0, 1.0);
         let fv = f_sc(sn2.sqrt(), 1.0 - sn2, m);
         let away = s_theta * 1f64.copysign(cos_o) < 0.0;
         Vortical {
             u_minus: um,
+            one_minus_n,
             m,
             k: k_of(m),
             w: a2up.sqrt(),
@@ -147,12 +156,17 @@ impl Vortical {
     pub fn lambda_g_phi(&self, lambda: f64, tau: f64) -> f64 {
         let (um, m, k) = (self.u_minus, self.m, self.k);
         let n = m / (1.0 - um);
-        let complete = rf(0.0, 1.0 - m, 1.0) + n / 3.0 * rj(0.0, 1.0 - m, 1.0, 1.0 - n);
+        // Pi(n; phi | m) (DLMF 19.25.14) with 1 - n sin^2 = (1 - n) + n cos^2.
+        let pi_of = |s: f64, c2: f64| {
+            let d2 = 1.0 - m * s * s;
+            s * rf(c2, d2, 1.0) + n / 3.0 * s * s * s * rj(c2, d2, 1.0, self.one_minus_n + n * c2)
+        };
+        let complete = pi_of(1.0, 0.0);
         let p = |v: f64| {
             let j = ((v + k) / (2.0 * k)).floor();
             let vr = v - 2.0 * j * k;
             let (sn, cn, _) = sn_cn_dn(vr.abs(), m);
-            2.0 * j * complete + vr.signum() * pi_sc(n, sn, cn * cn, m)
+            2.0 * j * complete + vr.signum() * pi_of(sn, cn * cn)
         };
         let (v0, v1) = (self.v0, self.v0 + self.w * tau);
         if lambda == 0.0 {

@@ -176,3 +176,52 @@ fn crossing(ray: &Ray, y: &State, h: f64, rtol: f64) -> State {
     }
     best
 }
+
+/// The backward ray's Boyer-Lindquist (r, theta, phi) at each Mino time of
+/// `taus` (ascending, from 0 at the camera), integrated as [`integrate`]
+/// does (the tests of the closed-form path, path.rs).
+pub fn states_at(position: DVec3, d: DVec3, spin: f64, taus: &[f64], rtol: f64) -> Vec<[f64; 3]> {
+    let a = spin;
+    let cc = Constants::of(2.0 * position, d, a);
+    let f = cc.frame;
+    let ray = Ray {
+        a,
+        lambda: cc.lambda,
+        eta: cc.eta,
+    };
+    let r_pot = super::radial::r_potential(f.r, a, cc.lambda, cc.eta).max(0.0);
+    let mut y: State = [
+        f.r,
+        cc.s_r * r_pot.sqrt(),
+        f.theta,
+        cc.s_theta * cc.theta_potential.max(0.0).sqrt(),
+        f.phi,
+    ];
+    // (Along a photon of E < 0 the azimuth turns the other way: phi_o -
+    // turn (I_phi + lambda G_phi), as the closed form.)
+    let turn = cc.energy.signum();
+    let (mut t, mut h) = (0.0, 1e-3 / (1.0 + f.r));
+    let mut out = Vec::with_capacity(taus.len());
+    let mut budget = 5_000_000usize;
+    for &target in taus {
+        while t < target && budget > 0 {
+            budget -= 1;
+            let step = h.min(target - t);
+            if t + step == t {
+                break;
+            }
+            let (yn, err) = ray.step(&y, step, rtol);
+            if err.is_nan() || err > 1.0 {
+                h = step * (0.9 * err.powf(-0.2)).clamp(0.1, 0.5);
+                continue;
+            }
+            y = yn;
+            t += step;
+            if step == h {
+                h *= (0.9 * err.max(1e-10).powf(-0.2)).clamp(0.2, 5.0);
+            }
+        }
+        out.push([y[0], y[2], f.phi + turn * (y[4] - f.phi)]);
+    }
+    out
+}

@@ -21,6 +21,7 @@ pub mod elliptic;
 pub mod frame;
 pub mod interior;
 pub mod mino;
+pub mod path;
 pub mod polarized;
 pub mod radial;
 pub mod schild;

@@ -298,6 +298,27 @@ impl Radial {
         out
     }
 
+    /// I_phi(t1) - I_phi(t0): the closed forms' difference, or in case 4
+    /// the quadrature over [t0, t1] alone (a path's points add these up,
+    /// path.rs, where a quadrature from 0 for each would be slow).
+    pub fn i_phi_between(&self, t0: f64, t1: f64) -> f64 {
+        if self.a == 0.0 || t1 == t0 {
+            return 0.0;
+        }
+        if !matches!(self.motion, Motion::Complex { .. }) {
+            // (At tau = 0 the forms are 0 / 0; I_phi(0) = 0.)
+            let at = |t: f64| if t == 0.0 { 0.0 } else { self.i_phi(t) };
+            return at(t1) - at(t0);
+        }
+        let mut out = 0.0;
+        for (rh, sign) in [(self.r_plus, 1.0), (self.r_minus, -1.0)] {
+            let ah = sign * (2.0 * rh - self.a * self.lambda) / (self.r_plus - self.r_minus);
+            let j = adaptive_gauss(&|t| 1.0 / (self.r_at(t) - rh), t0, t1, 1e-13, 12);
+            out += self.a * ah * j;
+        }
+        out
+    }
+
     /// J_h(tau): the integral of 1 / (r - r_h) over Mino time.
     fn j_horizon(&self, rh: f64, tau: f64) -> f64 {
         match self.motion {
