@@ -27,8 +27,8 @@
 use ash::vk;
 use glam::DVec3;
 
-use crate::physics::{Disk, Outcome};
-use crate::scene::{DiskKind, Scene};
+use crate::physics::Outcome;
+use crate::scene::Scene;
 use crate::spacetime::{GpuPath, Metric, Spacetime};
 use crate::vk::DeviceInfo;
 
@@ -68,12 +68,8 @@ pub fn applies(path: GpuPath, thin_disk: bool) -> bool {
 /// ([`crate::spacetime::SpinningHole::defers`]) is below
 /// [`MAX_DEFERRED_SHARE`].
 pub fn pays(scene: &Scene, spacetime: &Spacetime, width: u32, height: u32) -> bool {
-    let disk = Disk {
-        normal: DVec3::from(scene.disk.normal),
-        inner: scene.disk.inner_radius,
-        outer: scene.disk.outer_radius,
-    };
-    let thin = (scene.disk.kind == DiskKind::Thin).then_some(&disk);
+    let disk = scene.thin_disk();
+    let thin = disk.as_ref();
     let frame = scene.camera.frame();
     let viewer = scene.camera.viewer();
     let observer = spacetime.camera_observer(&viewer);

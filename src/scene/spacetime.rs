@@ -63,6 +63,16 @@ impl Scene {
             .map_or((1.0, 0.0), |h| (h.rs, h.spin))
     }
 
+    /// The thin disk as the f64 light paths take it (None for another kind:
+    /// they describe thin-disk hits).
+    pub fn thin_disk(&self) -> Option<Disk> {
+        (self.disk.kind == super::DiskKind::Thin).then(|| Disk {
+            normal: DVec3::from(self.disk.normal),
+            inner: self.disk.inner_radius,
+            outer: self.disk.outer_radius,
+        })
+    }
+
     /// The camera's observer (the pixel-to-ray mapping and its redshift).
     pub fn observer(&self) -> Observer {
         self.spacetime().camera_observer(&self.camera.viewer())
@@ -121,18 +131,13 @@ impl Scene {
             }
             None => (2.0 * (ray.origin - centre).length()).max(20.0 * rs),
         };
-        let disk = Disk {
-            normal: DVec3::from(self.disk.normal),
-            inner: self.disk.inner_radius,
-            outer: self.disk.outer_radius,
-        };
-        let thin = (self.disk.kind == super::DiskKind::Thin).then_some(&disk);
+        let disk = self.thin_disk();
         let viewer = Viewer {
             position: ray.origin,
             ..self.camera.viewer()
         };
         self.spacetime()
-            .light_path(thin, &viewer, ray.dir, reach, samples)
+            .light_path(disk.as_ref(), &viewer, ray.dir, reach, samples)
             .map_err(|why| usage(format!("light_path {why}")))
     }
 }

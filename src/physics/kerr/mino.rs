@@ -76,6 +76,25 @@ fn motion_direction(a: f64, y: &State, d: &State) -> DVec3 {
     (dp_dr * d[0] + dp_dth * d[2] + dp_dph * d[4]).normalize()
 }
 
+/// The system and its state at the camera for the constants `cc`.
+fn start(cc: &Constants, a: f64) -> (Ray, State) {
+    let f = cc.frame;
+    let r_pot = super::radial::r_potential(f.r, a, cc.lambda, cc.eta).max(0.0);
+    let ray = Ray {
+        a,
+        lambda: cc.lambda,
+        eta: cc.eta,
+    };
+    let y = [
+        f.r,
+        cc.s_r * r_pot.sqrt(),
+        f.theta,
+        cc.s_theta * cc.theta_potential.max(0.0).sqrt(),
+        f.phi,
+    ];
+    (ray, y)
+}
+
 /// Integrates the backward ray from a ZAMO camera at `position` (r_s)
 /// along `d` (ZAMO frame), as [`super::trace_zamo`] does in closed form.
 /// `rtol`: the relative tolerance per step (1e-12 gives about 1e-9 on
@@ -99,19 +118,7 @@ pub fn integrate(
         return done(KerrOutcome::Captured);
     }
     let f = cc.frame;
-    let ray = Ray {
-        a,
-        lambda: cc.lambda,
-        eta: cc.eta,
-    };
-    let r_pot = super::radial::r_potential(f.r, a, cc.lambda, cc.eta).max(0.0);
-    let mut y: State = [
-        f.r,
-        cc.s_r * r_pot.sqrt(),
-        f.theta,
-        cc.s_theta * cc.theta_potential.max(0.0).sqrt(),
-        f.phi,
-    ];
+    let (ray, mut y) = start(&cc, a);
     let horizon = r_horizon(a) * (1.0 + 1e-6);
     let mut h = 1e-3 / (1.0 + f.r);
     let mut crossings = 0;
@@ -184,19 +191,7 @@ pub fn states_at(position: DVec3, d: DVec3, spin: f64, taus: &[f64], rtol: f64) 
     let a = spin;
     let cc = Constants::of(2.0 * position, d, a);
     let f = cc.frame;
-    let ray = Ray {
-        a,
-        lambda: cc.lambda,
-        eta: cc.eta,
-    };
-    let r_pot = super::radial::r_potential(f.r, a, cc.lambda, cc.eta).max(0.0);
-    let mut y: State = [
-        f.r,
-        cc.s_r * r_pot.sqrt(),
-        f.theta,
-        cc.s_theta * cc.theta_potential.max(0.0).sqrt(),
-        f.phi,
-    ];
+    let (ray, mut y) = start(&cc, a);
     // (Along a photon of E < 0 the azimuth turns the other way: phi_o -
     // turn (I_phi + lambda G_phi), as the closed form.)
     let turn = cc.energy.signum();
