@@ -98,7 +98,7 @@ fn bad(name: &str, value: &str) -> Error {
 fn switch(name: &str, value: &str) -> Result<bool> {
     match value.trim().to_ascii_lowercase().as_str() {
         "1" | "true" | "on" | "yes" => Ok(true),
-        "0" | "false" | "off" | "no" | "" => Ok(false),
+        "0" | "false" | "off" | "no" => Ok(false),
         _ => Err(bad(name, value)),
     }
 }
@@ -116,15 +116,19 @@ impl Settings {
         let mut unknown = Vec::new();
         for (k, v) in vars {
             let (name, value) = (k.as_ref(), v.as_ref());
+            // One rule for every variable: set means a value. An empty one
+            // (`BLACKHOLE_NO_SPLIT=`) is refused rather than read as unset
+            // or as off.
+            if value.trim().is_empty() && name != "BLACKHOLE_BLESS" {
+                if let Some((_, wants)) = KNOWN.iter().find(|(n, _)| *n == name) {
+                    return Err(Error::Usage(format!(
+                        "environment: {name} is set but empty; it takes {wants} (unset it for the default)"
+                    )));
+                }
+            }
             match name {
-                "BLACKHOLE_DEVICE" => {
-                    s.device = Some(value.to_string()).filter(|d| !d.trim().is_empty());
-                }
-                "BLACKHOLE_VALIDATION" => {
-                    s.validation = (!value.trim().is_empty())
-                        .then(|| switch(name, value))
-                        .transpose()?;
-                }
+                "BLACKHOLE_DEVICE" => s.device = Some(value.to_string()),
+                "BLACKHOLE_VALIDATION" => s.validation = Some(switch(name, value)?),
                 "BLACKHOLE_GPU_TIMEOUT_S" => {
                     let secs = value
                         .trim()
@@ -250,13 +254,22 @@ mod tests {
             one("BLACKHOLE_VALIDATION", "0").unwrap().validation,
             Some(false)
         );
-        assert_eq!(one("BLACKHOLE_VALIDATION", "").unwrap().validation, None);
         assert!(one("BLACKHOLE_NO_SPLIT", "1").unwrap().no_split);
         assert!(!one("BLACKHOLE_NO_QUAD", "0").unwrap().no_quad);
         assert_eq!(
             one("BLACKHOLE_DEVICE", "llvm").unwrap().device.as_deref(),
             Some("llvm")
         );
+    }
+
+    #[test]
+    fn an_empty_value_is_refused_the_same_way_for_every_variable() {
+        for (name, _) in KNOWN.iter().filter(|(n, _)| *n != "BLACKHOLE_BLESS") {
+            for value in ["", " "] {
+                let e = one(name, value).unwrap_err().to_string();
+                assert!(e.contains(name) && e.contains("empty"), "{e}");
+            }
+        }
     }
 
     #[test]

@@ -165,11 +165,15 @@ impl Scene {
         })?;
         scene.resolve_isco();
         scene.validate().map_err(|(path, value, why)| {
-            let line = locate::line_of_key(src, &path)
-                .map(|l| format!(":{l}"))
-                .unwrap_or_default();
             let key = locate::display_path(&path);
-            Error::Scene(format!("{origin}{line}: {key} = {value}: {why}"))
+            // A key the file does not set is its default: said so, since
+            // it has no line to point at.
+            match locate::line_of_key(src, &path) {
+                Some(l) => Error::Scene(format!("{origin}:{l}: {key} = {value}: {why}")),
+                None => Error::Scene(format!(
+                    "{origin}: {key} = {value} (the default: the file does not set it): {why}"
+                )),
+            }
         })?;
         Ok(scene)
     }

@@ -5,7 +5,7 @@
 
 use super::Camera;
 use super::locate::Seg::{self, Key};
-use super::rule::{Check, fail, vec3};
+use super::rule::{Check, apart, fail, vec3};
 use crate::spacetime::{EndRefusal, FALLING_MIN_R, Refusal};
 
 /// Why the camera's observer cannot stand where it is
@@ -15,12 +15,15 @@ pub(super) fn refuse(c: &Camera, at: &[Seg], refusal: Refusal) -> Check {
     let position = || vec3(&c.position);
     let name = format!("\"{}\"", c.observer.name());
     match refusal {
-        Refusal::InsideHorizon { hole } => fail(
+        Refusal::InsideHorizon { hole, r, horizon } => fail(
             &key("position"),
             position(),
             format!(
-                "is inside the horizon of black_hole[{hole}], where only a \"falling\" observer \
-                 can be (nothing else stands still or orbits there): set observer = \"falling\""
+                "is inside the horizon of black_hole[{hole}] (r = {} rs <= r+ = {} rs), where only a \
+                 \"falling\" observer can be (nothing else stands still or orbits there): set \
+                 observer = \"falling\"",
+                apart(r, horizon),
+                apart(horizon, r)
             ),
         ),
         Refusal::InsideAbsorber { hole, several } => fail(
@@ -43,8 +46,10 @@ pub(super) fn refuse(c: &Camera, at: &[Seg], refusal: Refusal) -> Check {
             &key("position"),
             position(),
             format!(
-                "is inside the photon sphere (r = {r:.4} <= 1.5 rs = {photon}), where no \
-                 \"orbiting\" observer can be"
+                "is inside the photon sphere (r = {} <= 1.5 rs = {}), where no \
+                 \"orbiting\" observer can be",
+                apart(r, photon),
+                apart(photon, r)
             ),
         ),
         Refusal::OnDiskAxis => fail(
@@ -56,10 +61,10 @@ pub(super) fn refuse(c: &Camera, at: &[Seg], refusal: Refusal) -> Check {
             &key("position"),
             position(),
             format!(
-                "is {:.4} rs from the singularity; a \"falling\" observer must stay at r >= \
+                "is {} rs from the singularity; a \"falling\" observer must stay at r >= \
                  {FALLING_MIN_R} rs (closer, the light paths lose the accuracy the renderer \
                  promises: docs/inside-the-horizon.md)",
-                r / rs
+                apart(r / rs, FALLING_MIN_R)
             ),
         ),
         Refusal::FlatAroundSpin => fail(
@@ -67,36 +72,34 @@ pub(super) fn refuse(c: &Camera, at: &[Seg], refusal: Refusal) -> Check {
             name,
             "needs spin = 0: \"flat\" is the Schwarzschild comparison mapping",
         ),
-        Refusal::InsideSpinningHorizon { r, horizon } => fail(
-            &key("observer"),
-            name,
-            format!(
-                "stands inside the spinning hole's horizon (Boyer-Lindquist r = {r:.4} rs <= r+ = \
-                 {horizon:.4} rs), where only a \"falling\" observer can be (nothing else stands \
-                 still or orbits there): set observer = \"falling\""
-            ),
-        ),
         Refusal::FallingTooDeep { r, floor, inner } => fail(
             &key("position"),
             position(),
             format!(
-                "is at Boyer-Lindquist r = {r:.6} rs; a \"falling\" camera of a spinning hole must \
-                 stay above r = {floor:.6} rs, (1 + 1e-3) times the inner horizon r- = {inner:.6} \
+                "is at Boyer-Lindquist r = {} rs; a \"falling\" camera of a spinning hole must \
+                 stay above r = {} rs, (1 + 1e-3) times the inner horizon r- = {inner:.6} \
                  rs (beyond r- the paths are not drawn) and at least {FALLING_MIN_R} rs from the \
-                 centre (docs/inside-the-horizon.md)"
+                 centre (docs/inside-the-horizon.md)",
+                apart(r, floor),
+                apart(floor, r)
             ),
         ),
         Refusal::StaticInErgoregion { r, r_ergo } => fail(
             &key("observer"),
             name,
             format!(
-                "cannot stand inside the ergoregion (r = {r:.4} rs, r_ergo = {r_ergo:.4} rs): use \"zamo\" or \"falling\""
+                "cannot stand inside the ergoregion (r = {} rs < r_ergo = {} rs): use \"zamo\" or \"falling\"",
+                apart(r, r_ergo),
+                apart(r_ergo, r)
             ),
         ),
         Refusal::OrbitTooFast { v, r } => fail(
             &key("observer"),
             name,
-            format!("would orbit faster than light there (v = {v:.4} c at r = {r:.4} rs)"),
+            format!(
+                "would orbit faster than light there (v = {} c at r = {r:.4} rs)",
+                apart(v, 1.0)
+            ),
         ),
     }
 }
@@ -117,9 +120,20 @@ pub(super) fn refuse_fall_end(end: f64, refusal: EndRefusal) -> Check {
             &key,
             end,
             format!(
-                "puts the camera at Boyer-Lindquist r = {r:.6} rs on the line of its fall; a \
-                 falling camera of a spinning hole must stay above r = {floor:.6} rs, just \
-                 outside the inner horizon r- = {inner:.6} rs (docs/inside-the-horizon.md)"
+                "puts the camera at Boyer-Lindquist r = {} rs on the line of its fall; a \
+                 falling camera of a spinning hole must stay above r = {} rs, just \
+                 outside the inner horizon r- = {inner:.6} rs (docs/inside-the-horizon.md)",
+                apart(r, floor),
+                apart(floor, r)
+            ),
+        ),
+        EndRefusal::NotInward { start } => fail(
+            &key,
+            end,
+            format!(
+                "must be below the fall's start: the camera (camera.position) starts {} rs \
+                 from the hole's centre and a fall only goes inward",
+                apart(start, end)
             ),
         ),
         EndRefusal::TooClose => fail(

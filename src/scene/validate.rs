@@ -230,20 +230,35 @@ impl Scene {
     fn inner_radius_quoted(&self) -> String {
         let (rs, spin) = self.first_hole();
         let isco = crate::spacetime::radii::isco(rs, spin.clamp(-1.0, 1.0));
-        if self.disk.inner_radius == isco {
-            format!("\"isco\", {isco:.4} rs, the ISCO at spin {spin}")
+        if self.inner_is_isco() {
+            format!("\"isco\": {isco}, the ISCO of black_hole[0] with rs = {rs} and spin = {spin}")
         } else {
             format!("{}", self.disk.inner_radius)
         }
+    }
+
+    /// Whether the disk's inner radius is the ISCO (`"isco"`, written or
+    /// omitted) rather than a number of the user's.
+    fn inner_is_isco(&self) -> bool {
+        let (rs, spin) = self.first_hole();
+        self.disk.inner_radius == crate::spacetime::radii::isco(rs, spin.clamp(-1.0, 1.0))
     }
 
     fn validate_disk(&self) -> Check {
         let d = &self.disk;
         let key = |k| [Key("disk"), Key(k)];
         direction(&key("normal"), &d.normal)?;
-        non_negative(&key("inner_radius"), d.inner_radius)?;
+        // A derived inner radius (the ISCO, which scales with rs) is checked
+        // against the outer one only where there is a disk to draw: with
+        // kind = "none" a hole of rs = 1e9 keeps its default radii.
+        let derived = self.inner_is_isco();
+        if !derived {
+            non_negative(&key("inner_radius"), d.inner_radius)?;
+        }
+        finite(&key("outer_radius"), d.outer_radius)?;
         rule(
-            d.outer_radius.in_range() && d.outer_radius > d.inner_radius,
+            (derived && d.kind == DiskKind::None)
+                || (d.outer_radius.in_range() && d.outer_radius > d.inner_radius),
             &key("outer_radius"),
             d.outer_radius,
             format!(

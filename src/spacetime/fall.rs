@@ -213,11 +213,17 @@ impl Fall {
     }
 
     /// Whether the fall may end at `end_radius` (rs from the centre, as
-    /// `[animation] fall_end_radius` says), or why not: inside a spinning
+    /// `[animation] fall_end_radius` says), or why not: not inside the
+    /// start, inside a spinning
     /// hole's horizon for an observer that cannot go there, below a
     /// spinning hole's floor, or closer to a non-rotating hole's
     /// singularity than [`FALLING_MIN_R`].
     pub fn check_end(&self, end_radius: f64) -> Result<(), EndRefusal> {
+        if end_radius * self.rs >= self.start {
+            return Err(EndRefusal::NotInward {
+                start: self.start / self.rs,
+            });
+        }
         let horizon = radii::horizon(1.0, self.spin.abs());
         if !(self.spin == 0.0 || self.interior || end_radius > 1.01 * horizon) {
             return Err(EndRefusal::Inside { horizon });

@@ -107,6 +107,12 @@ fn the_end_and_its_refusals() {
         falling(0.9, 20.0, DVec3::Y).check_end(0.1),
         Err(EndRefusal::TooDeep { .. })
     ));
+    // A fall only goes inward: an end at or beyond the start is refused.
+    assert_eq!(
+        falling(0.0, 20.0, DVec3::Z).check_end(20.0),
+        Err(EndRefusal::NotInward { start: 20.0 })
+    );
+    assert_eq!(falling(0.0, 20.0, DVec3::Z).check_end(19.9), Ok(()));
     assert!(matches!(
         outside.check_end(0.5),
         Err(EndRefusal::Inside { .. })

@@ -119,9 +119,10 @@ impl SpinningHole {
         let half = 0.5 * self.hole.rs;
         match kerr::observer_velocity(kind, local, self.spin) {
             Ok(beta) => Ok(self.world(beta) / self.hole.rs),
-            Err(PlacementError::InsideHorizon(r)) => Err(Refusal::InsideSpinningHorizon {
-                r: r * half,
-                horizon: self.horizon(),
+            Err(PlacementError::InsideHorizon(r)) => Err(Refusal::InsideHorizon {
+                hole: 0,
+                r: r * half / self.hole.rs,
+                horizon: self.horizon() / self.hole.rs,
             }),
             Err(PlacementError::TooDeep(r, floor)) => Err(Refusal::FallingTooDeep {
                 r: r * half,

@@ -13,9 +13,12 @@ pub use crate::physics::FALLING_MIN_R;
 /// Why an observer cannot stand where a camera puts it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Refusal {
-    /// Inside the horizon of a non-rotating hole `hole` with an observer
-    /// other than `"falling"` (none other exists there).
-    InsideHorizon { hole: usize },
+    /// Inside the (outer) horizon of hole `hole`, non-rotating or
+    /// spinning, with an observer other than `"falling"` (none other exists
+    /// there): the camera at `r` (its distance from the centre, or a
+    /// spinning hole's Boyer-Lindquist r), the horizon at `horizon`, both
+    /// in units of the hole's rs.
+    InsideHorizon { hole: usize, r: f64, horizon: f64 },
     /// Inside the horizon of hole `hole` of a scene with several holes
     /// (their summed paths say nothing about an interior), or with gravity
     /// off (the holes are absorbing spheres).
@@ -31,10 +34,6 @@ pub enum Refusal {
     /// `"flat"` around a spinning hole (it is the Schwarzschild comparison
     /// mapping).
     FlatAroundSpin,
-    /// Inside a spinning hole's outer horizon `horizon`, with an observer
-    /// other than `"falling"`.
-    /// (`r`: the camera's Boyer-Lindquist r, rs.)
-    InsideSpinningHorizon { r: f64, horizon: f64 },
     /// `"falling"` between a spinning hole's horizons at Boyer-Lindquist
     /// `r`, at or below `floor`: (1 + 1e-3) times the inner horizon `inner`
     /// or [`FALLING_MIN_R`] rs, whichever is farther out (rs units).
@@ -60,6 +59,9 @@ pub enum EndRefusal {
     /// A falling camera's fall into a non-rotating hole ending closer to
     /// the singularity than [`FALLING_MIN_R`].
     TooClose,
+    /// At or beyond where the fall starts (`start`, the camera's distance
+    /// from the hole's centre, rs): a fall only goes inward.
+    NotInward { start: f64 },
 }
 
 impl Spacetime {
@@ -89,7 +91,11 @@ impl Spacetime {
                 return Err(Refusal::InsideAbsorber { hole: i, several });
             }
             if r <= h.rs && kind != ObserverKind::Falling {
-                return Err(Refusal::InsideHorizon { hole: i });
+                return Err(Refusal::InsideHorizon {
+                    hole: i,
+                    r: r / h.rs,
+                    horizon: 1.0,
+                });
             }
             if nearest.is_none_or(|(_, best, _)| r < best) {
                 nearest = Some((rel, r, h.rs));

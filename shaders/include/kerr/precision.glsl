@@ -42,11 +42,13 @@ const bool KERR_COMMON_ONLY = SPLIT_STAGE == STAGE_TRACE;
 #define kreal float
 #define kvec2 vec2
 #define kvec3 vec3
+#define kvec4 vec4
 const int KERR_CBRT_TURNS = 0, KERR_RESOLVENT_TURNS = 3;
 #else
 #define kreal double
 #define kvec2 dvec2
 #define kvec3 dvec3
+#define kvec4 dvec4
 const int KERR_CBRT_TURNS = 3, KERR_RESOLVENT_TURNS = 4;
 #endif
 

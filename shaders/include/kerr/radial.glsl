@@ -89,12 +89,35 @@ void kerr_roots(kreal ca, kreal cb, kreal cc, out kreal z, out kreal q1, out kre
     q2 = -ca / 2.0 - zz - cb / (4.0 * z);
 }
 
-// Cases 1 and 2: four real roots r1 <= r2 <= r3 <= r4 (z +- sqrt(q2) and
-// -z +- sqrt(q1)); the camera outside r4 (case 2) or between r2 and r3
+// The roots of a path whose lambda^2 + eta is large (-A >= KERR_FAR_ROOTS:
+// a photon of energy near zero in the ergoregion, lambda = L / E and eta =
+// Q / E^2 up to 1e10 and more, or a far camera's wide rays). Two roots lie
+// near +-sqrt(-A) and two near the hole, where the resolvent's two largest
+// roots almost coincide and its z loses the small pair's digits (by up to
+// the small roots themselves at lambda = 1e4). Here the small pair comes
+// from A r^2 + B r + C = 0 (R without its r^4, relatively 1 / -A smaller
+// there), polished by Newton's method on R; the large pair from Vieta's
+// sums (r1 + r4 = -(r2 + r3), r1 r4 = (r2 r3 (r2 + r3) - B) / (r2 + r3)).
+// All four real, r1 < 0 < r2 < r3 < r4 (in this range A r^2 + B r + C
+// always has two real roots, at least 2 sqrt(1 - a^2) apart).
+const float KERR_FAR_ROOTS = 1e5;
+
+kvec4 kerr_far_roots(kreal ca, kreal cb, kreal cc) {
+    kreal t = -0.5 * (cb + sqrt(max(cb * cb - 4.0 * ca * cc, 0.0)));
+    kvec2 s = kvec2(t / ca, t != 0.0 ? cc / t : 0.0);
+    [[unroll]] for (int i = 0; i < 4; ++i) {
+        s -= (((s * s + ca) * s + cb) * s + cc) / (((4.0 * s * s + 2.0 * ca) * s + cb));
+    }
+    kreal s1 = min(s.x, s.y), s2 = max(s.x, s.y), sum = s1 + s2;
+    kreal prod = (s1 * s2 * sum - cb) / sum;
+    kreal r4 = 0.5 * (sqrt(sum * sum - 4.0 * prod) - sum);
+    return kvec4(prod / r4, s1, s2, r4);
+}
+
+// Cases 1 and 2: four real roots r1 <= r2 <= r3 <= r4; the camera outside r4 (case 2) or between r2 and r3
 // (case 1). rp, rm: the horizons; ah: their weights in I_phi.
-void kerr_radial_real(inout KerrRadial k, kreal a, kreal r_o, float s_r, kreal z, kreal q1, kreal q2, kreal rp,
-                      kreal rm, kvec2 ah) {
-    kreal r1 = -z - sqrt(q1), r2 = -z + sqrt(q1), r3 = z - sqrt(q2), r4 = z + sqrt(q2);
+void kerr_radial_real(inout KerrRadial k, kreal a, kreal r_o, float s_r, kreal r1, kreal r2, kreal r3, kreal r4,
+                      kreal rp, kreal rm, kvec2 ah) {
     kreal r21 = r2 - r1, r31 = r3 - r1, r32 = r3 - r2, r41 = r4 - r1, r42 = r4 - r2, r43 = r4 - r3;
     k.r1 = float(r1); k.r2 = float(r2); k.r3 = float(r3); k.r4 = float(r4);
     k.r21 = float(r21); k.r31 = float(r31); k.r32 = float(r32); k.r41 = float(r41); k.r43 = float(r43);
@@ -219,9 +242,15 @@ KerrRadial kerr_radial(kreal a, kreal lam, kreal eta, kreal r_o, float s_r) {
     kvec2 ah = kvec2(a * (2.0 * rp - a * lam) / (rp - rm), -a * (2.0 * rm - a * lam) / (rp - rm));
     k.ah = vec2(ah);
     kreal z, q1, q2;
-    kerr_roots(a * a - eta - lam * lam, 2.0 * (eta + (lam - a) * (lam - a)), -a * a * eta, z, q1, q2);
+    kreal ca = a * a - eta - lam * lam, cb = 2.0 * (eta + (lam - a) * (lam - a)), cc = -a * a * eta;
+    if (-ca >= KERR_FAR_ROOTS) {
+        kvec4 r = kerr_far_roots(ca, cb, cc);
+        kerr_radial_real(k, a, r_o, s_r, r.x, r.y, r.z, r.w, rp, rm, ah);
+        return k;
+    }
+    kerr_roots(ca, cb, cc, z, q1, q2);
     if (q1 >= 0.0 && q2 >= 0.0) {
-        kerr_radial_real(k, a, r_o, s_r, z, q1, q2, rp, rm, ah);
+        kerr_radial_real(k, a, r_o, s_r, -z - sqrt(q1), -z + sqrt(q1), z - sqrt(q2), z + sqrt(q2), rp, rm, ah);
     } else if (q1 >= 0.0) {
         kerr_radial_pair(k, a, r_o, s_r, z, q1, q2, rp, rm, ah);
     } else {

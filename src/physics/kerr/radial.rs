@@ -13,12 +13,26 @@ pub fn r_potential(r: f64, a: f64, lambda: f64, eta: f64) -> f64 {
     (r * r + a * a - a * lambda).powi(2) - (r * r - 2.0 * r + a * a) * (eta + (lambda - a).powi(2))
 }
 
+/// Where a path's roots take [`far_roots`]: lambda^2 + eta - a^2 (-A) at
+/// least this.
+pub const FAR_ROOTS: f64 = 1e5;
+
 /// The four roots of R(r), GL 2020 eqs. (79)-(95), in their order
-/// (r1 <= r2 <= r3 <= r4 where real).
+/// (r1 <= r2 <= r3 <= r4 where real); for a large lambda^2 + eta,
+/// [`far_roots`].
 pub fn radial_roots(a: f64, lambda: f64, eta: f64) -> [Complex64; 4] {
     let big_a = a * a - eta - lambda * lambda;
     let big_b = 2.0 * (eta + (lambda - a).powi(2));
     let big_c = -a * a * eta;
+    if -big_a >= FAR_ROOTS {
+        return far_roots(big_a, big_b, big_c).map(|r| Complex64::new(r, 0.0));
+    }
+    cardano_roots(big_a, big_b, big_c)
+}
+
+/// The roots of r^4 + A r^2 + B r + C through the resolvent cubic
+/// (Cardano), GL 2020 eqs. (79)-(95).
+fn cardano_roots(big_a: f64, big_b: f64, big_c: f64) -> [Complex64; 4] {
     let p = -big_a * big_a / 12.0 - big_c;
     let q = -big_a / 3.0 * ((big_a / 6.0).powi(2) - big_c) - big_b * big_b / 8.0;
     let sq = Complex64::new((p / 3.0).powi(3) + (q / 2.0).powi(2), 0.0).sqrt();
@@ -35,6 +49,37 @@ pub fn radial_roots(a: f64, lambda: f64, eta: f64) -> [Complex64; 4] {
     let t1 = (-big_a / 2.0 - z * z + big_b / (4.0 * z)).sqrt();
     let t2 = (-big_a / 2.0 - z * z - big_b / (4.0 * z)).sqrt();
     [-z - t1, -z + t1, z - t2, z + t2]
+}
+
+/// The roots of R(r) = r^4 + A r^2 + B r + C where -A is large (a photon
+/// of energy near zero, lambda = L / E and eta = Q / E^2 unbounded as E ->
+/// 0; a far camera's wide rays): two roots near +-sqrt(-A), two near the
+/// hole. The resolvent's two largest roots almost coincide there, and
+/// Cardano's z keeps few of the small pair's digits; the small pair comes
+/// instead from A r^2 + B r + C = 0 (R without r^4, relatively 1 / -A
+/// smaller near the hole), polished by Newton's method on R, and the large
+/// pair from Vieta's sums. All four are real (A r^2 + B r + C's
+/// discriminant is 4 (eta + lambda^2)(eta (1 - a^2) + lambda^2) to leading
+/// order), r1 < 0 < r2 < r3 < r4.
+pub fn far_roots(big_a: f64, big_b: f64, big_c: f64) -> [f64; 4] {
+    let t = -0.5 * (big_b + (big_b * big_b - 4.0 * big_a * big_c).max(0.0).sqrt());
+    let polish = |mut r: f64| {
+        for _ in 0..4 {
+            let f = ((r * r + big_a) * r + big_b) * r + big_c;
+            let df = (4.0 * r * r + 2.0 * big_a) * r + big_b;
+            r -= f / df;
+        }
+        r
+    };
+    let (s_a, s_b) = (
+        polish(t / big_a),
+        polish(if t != 0.0 { big_c / t } else { 0.0 }),
+    );
+    let (s1, s2) = (s_a.min(s_b), s_a.max(s_b));
+    let sum = s1 + s2;
+    let product = (s1 * s2 * sum - big_b) / sum;
+    let r4 = 0.5 * ((sum * sum - 4.0 * product).sqrt() - sum);
+    [product / r4, s1, s2, r4]
 }
 
 /// The radial case of a ray and what it needs to give r(tau).
@@ -469,4 +514,61 @@ pub fn outward_u_quadrature(a: f64, lambda: f64, eta: f64, r_o: f64) -> (f64, f6
             w * a * (2.0 * u - a * lambda * u * u) / ((1.0 - 2.0 * u + a * a * u * u) * rt.sqrt());
     }
     (tau, i_phi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A quartic built from chosen roots (two near the hole, two at
+    /// +-1e3 to +-1e9, summing to zero as R's do) gives them back: from
+    /// its coefficients by Vieta, not from R's constants.
+    #[test]
+    fn far_roots_give_back_the_roots_a_quartic_was_built_from() {
+        for (s1, s2) in [
+            (0.0144635, 1.9855853),
+            (-0.3, 1.7),
+            (0.02, 0.05),
+            (0.0, 2.0),
+        ] {
+            for big in [1e3, 3.7e4, 1e6, 1e9] {
+                let r1 = -big;
+                let r4 = big - s1 - s2;
+                let roots = [r1, s1, s2, r4];
+                let e2 = r1 * (s1 + s2 + r4) + s1 * (s2 + r4) + s2 * r4;
+                let e3 = r1 * s1 * s2 + r1 * s1 * r4 + r1 * s2 * r4 + s1 * s2 * r4;
+                let e4 = r1 * s1 * s2 * r4;
+                let got = far_roots(e2, -e3, e4);
+                for (g, r) in got.iter().zip(roots) {
+                    let tol = 1e-14 * r.abs().max(1.0) + 1e-15 * big.sqrt();
+                    assert!((g - r).abs() <= tol, "{roots:?}: {got:?}");
+                }
+            }
+        }
+    }
+
+    /// Around the threshold both forms give the same roots, so that a
+    /// path's case and values do not jump there.
+    #[test]
+    fn the_far_form_meets_cardanos_at_its_threshold() {
+        for (a, lambda, eta) in [
+            (0.99, 301.0, 1e4),
+            (0.5, -100.0, 9.01e4),
+            (0.9999, 316.5, 200.0),
+        ] {
+            let big_a: f64 = a * a - eta - lambda * lambda;
+            let big_b = 2.0 * (eta + (lambda - a) * (lambda - a));
+            let big_c = -a * a * eta;
+            assert!(-big_a >= FAR_ROOTS && -big_a < 1.1 * FAR_ROOTS);
+            let far = far_roots(big_a, big_b, big_c);
+            let cardano = cardano_roots(big_a, big_b, big_c);
+            for (f, c) in far.iter().zip(cardano) {
+                assert!(c.im.abs() < 1e-9 * big_a.abs().sqrt(), "{cardano:?}");
+                assert!(
+                    (f - c.re).abs() <= 1e-9 * f.abs().max(1.0),
+                    "{far:?} {cardano:?}"
+                );
+            }
+        }
+    }
 }
