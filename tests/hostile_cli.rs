@@ -75,7 +75,9 @@ fn an_isco_inner_radius_is_quoted_as_the_isco() {
     );
     assert!(
         e.contains("disk.outer_radius = 4")
-            && e.contains("\"isco\", 4.4972 rs, the ISCO at spin -0.998"),
+            && e.contains(
+                "\"isco\": 4.4972, the ISCO of black_hole[0] with rs = 1 and spin = -0.998"
+            ),
         "{e}"
     );
 }

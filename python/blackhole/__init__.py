@@ -63,9 +63,15 @@ OUTCOMES = {
 def outcome(aov: np.ndarray) -> np.ndarray:
     """The outcome of each pixel of a geodesic AOV as a (H, W) array of
     names (``OUTCOMES``): ``outcome(aov) == "disk"`` masks the disk."""
-    codes = np.asarray(aov)[..., 3].astype(np.int64)
+    aov = np.asarray(aov)
+    if aov.ndim != 3 or aov.shape[2] != 4 or not np.issubdtype(aov.dtype, np.number):
+        raise ValueError(
+            f"outcome: expects a geodesic AOV, a numeric (H, W, 4) array; this one is {aov.dtype} {aov.shape}"
+        )
     names = np.array([OUTCOMES.get(i, "unknown") for i in range(max(OUTCOMES) + 1)] + ["unknown"])
-    return names[np.clip(codes, 0, len(names) - 1)]
+    code = aov[..., 3].astype(np.float64)
+    known = np.isfinite(code) & (code >= 0) & (code < len(names) - 1) & (code == np.floor(code))
+    return names[np.where(known, np.nan_to_num(code), len(names) - 1).astype(np.int64)]
 
 
 def sequence(

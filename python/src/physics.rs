@@ -78,7 +78,7 @@ fn shadow_outline<'py>(
     py: Python<'py>,
     spin: f64,
     inclination: f64,
-    n: usize,
+    n: i64,
     rs: f64,
 ) -> PyResult<Bound<'py, numpy::PyArray2<f64>>> {
     checked(spin, rs)?;
@@ -92,7 +92,7 @@ fn shadow_outline<'py>(
             "n = {n}: must be in [4, 100000]"
         )));
     }
-    let pts = radii::shadow_outline(spin, inclination, n);
+    let pts = radii::shadow_outline(spin, inclination, n as usize);
     let flat: Vec<f64> = pts.iter().flat_map(|&(x, y)| [x * rs, y * rs]).collect();
     numpy::PyArray1::from_vec(py, flat).reshape([pts.len(), 2])
 }
@@ -156,14 +156,18 @@ fn photon_paths<'py>(
 fn light_path<'py>(
     py: Python<'py>,
     scene: &crate::scene::Scene,
-    x: u32,
-    y: u32,
-    width: u32,
-    height: u32,
-    samples: usize,
+    x: i64,
+    y: i64,
+    width: i64,
+    height: i64,
+    samples: i64,
     reach: Option<f64>,
 ) -> PyResult<Bound<'py, pyo3::types::PyDict>> {
+    use crate::values::whole;
     use blackhole::physics::Outcome;
+    let (x, y) = (whole("x", x, 0)?, whole("y", y, 0)?);
+    let (width, height) = (whole("width", width, 1)?, whole("height", height, 1)?);
+    let samples = whole("samples", samples, 0)? as usize;
     let inner = &scene.inner;
     let path = py
         .allow_threads(|| inner.light_path((x, y), (width, height), samples, reach))

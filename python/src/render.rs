@@ -12,6 +12,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
 use crate::scene::Scene;
+use crate::values::whole;
 use crate::{DeviceError, to_py};
 
 /// Raised when Python sees a signal (Ctrl-C) during a render: the
@@ -37,6 +38,16 @@ enum When {
     Time(f64),
     /// A frame's index (as `render --frames`).
     Frame(u64),
+}
+
+/// A frame index as the crate takes it (a negative one refused by name).
+fn frame_index(frame: Option<i64>) -> PyResult<Option<u64>> {
+    frame
+        .map(|i| {
+            u64::try_from(i)
+                .map_err(|_| PyValueError::new_err(format!("frame = {i}: must be 0 or more")))
+        })
+        .transpose()
 }
 
 fn when(time: Option<f64>, frame: Option<u64>) -> PyResult<When> {
@@ -170,19 +181,21 @@ impl Renderer {
         &self,
         py: Python<'py>,
         scene: &Scene,
-        width: u32,
-        height: u32,
+        width: i64,
+        height: i64,
         hdr: bool,
-        spp: u32,
+        spp: i64,
         time: Option<f64>,
-        frame: Option<u64>,
+        frame: Option<i64>,
     ) -> PyResult<Bound<'py, PyAny>> {
         let kind = if hdr {
             OutputKind::Hdr
         } else {
             OutputKind::Ldr
         };
-        let f = self.frame(py, scene, (width, height), kind, spp.max(1), (time, frame))?;
+        let size = (whole("width", width, 1)?, whole("height", height, 1)?);
+        let spp = whole("spp", spp, 0)?;
+        let f = self.frame(py, scene, size, kind, spp, (time, frame_index(frame)?))?;
         to_array(py, f)
     }
 
@@ -196,10 +209,10 @@ impl Renderer {
         py: Python<'py>,
         scene: &Scene,
         kind: &str,
-        width: u32,
-        height: u32,
+        width: i64,
+        height: i64,
         time: Option<f64>,
-        frame: Option<u64>,
+        frame: Option<i64>,
     ) -> PyResult<Bound<'py, PyAny>> {
         let kind = match kind {
             "geodesic" => OutputKind::Geodesic,
@@ -210,7 +223,8 @@ impl Renderer {
                 )));
             }
         };
-        let f = self.frame(py, scene, (width, height), kind, 1, (time, frame))?;
+        let size = (whole("width", width, 1)?, whole("height", height, 1)?);
+        let f = self.frame(py, scene, size, kind, 1, (time, frame_index(frame)?))?;
         to_array(py, f)
     }
 
@@ -221,11 +235,13 @@ impl Renderer {
         &self,
         py: Python<'py>,
         scene: &Scene,
-        width: u32,
-        height: u32,
-        frames: u32,
-        warmup: u32,
+        width: i64,
+        height: i64,
+        frames: i64,
+        warmup: i64,
     ) -> PyResult<Bound<'py, PyAny>> {
+        let (width, height) = (whole("width", width, 1)?, whole("height", height, 1)?);
+        let (frames, warmup) = (whole("frames", frames, 1)?, whole("warmup", warmup, 0)?);
         let scene = scene.inner.clone();
         let json = self.run(py, move |r| {
             let (report, _) =

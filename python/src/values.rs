@@ -77,3 +77,18 @@ pub fn from_object(key: &str, o: &Bound<'_, PyAny>) -> PyResult<toml::Value> {
         o.get_type().name()?
     )))
 }
+
+/// A whole-number argument `name` (an image side, a sample or frame count,
+/// a pixel's column) as the u32 the crate takes: below `lo` or past u32 is
+/// a ValueError naming it (PyO3's own conversion would raise an
+/// OverflowError that does not say which argument), the rest the crate
+/// checks as the command line's do.
+pub fn whole(name: &str, v: i64, lo: i64) -> PyResult<u32> {
+    if v < lo {
+        return Err(PyValueError::new_err(format!(
+            "{name} = {v}: must be at least {lo}"
+        )));
+    }
+    u32::try_from(v)
+        .map_err(|_| PyValueError::new_err(format!("{name} = {v}: must be at most {}", u32::MAX)))
+}

@@ -2,6 +2,7 @@
 the CLI's PNG, the AOVs, every exception path, threads and Ctrl-C."""
 
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -144,7 +145,7 @@ def test_bad_calls_raise_value_error(renderer):
         renderer.render(scene, 8, 8, time=1.0, frame=2)
     with pytest.raises(ValueError, match="finite"):
         renderer.render(scene, 8, 8, time=float("nan"))
-    with pytest.raises(OverflowError):
+    with pytest.raises(ValueError, match="width = -1"):
         renderer.render(scene, -1, 8)
     with pytest.raises(TypeError):
         renderer.render("default", 8, 8)
@@ -156,6 +157,104 @@ def test_bad_calls_raise_value_error(renderer):
         blackhole.Scene.load("/nonexistent-dir/x.toml")
     # The renderer works after each of them.
     assert renderer.render(scene, 8, 8).shape == (8, 8, 4)
+
+
+@pytest.mark.parametrize(
+    "call, words",
+    [
+        (lambda r, s: r.render(s, 8, -3), "height = -3"),
+        (lambda r, s: r.render(s, 2**40, 8), "width = 1099511627776"),
+        (lambda r, s: r.render(s, 8, 8, spp=0), "spp = 0"),
+        (lambda r, s: r.render(s, 8, 8, spp=-1), "spp = -1"),
+        (lambda r, s: r.render(s, 8, 8, spp=10**9), "spp = 1000000000"),
+        (lambda r, s: r.render(s, 8, 8, frame=-1), "frame = -1"),
+        (lambda r, s: r.aov(s, "geodesic", 50000, 50000), "50000x50000"),
+        (lambda r, s: r.profile(s, 8, 8, frames=0), "frames"),
+        (lambda r, s: r.profile(s, 8, 8, frames=10**9), "frames"),
+        (lambda r, s: r.profile(s, 8, 8, warmup=-1), "warmup = -1"),
+        (lambda r, s: list(r.sequence(s, 8, 8, [-1])), "frame = -1"),
+        (lambda r, s: blackhole.light_path(s, -1, 0, 8, 8), "x = -1"),
+        (lambda r, s: blackhole.light_path(s, 0, 0, 8, 8, samples=10**12), "samples"),
+        (lambda r, s: blackhole.shadow_outline(0.5, 60.0, n=-4), "n = -4"),
+    ],
+)
+def test_numbers_out_of_range_raise_value_error_before_any_work(renderer, call, words):
+    # Sizes and counts past the limits are refused by name before anything
+    # is allocated or rendered (the command line's limits: --spp 1 to 1024,
+    # --frames 1 to 100000), never an OverflowError that names no argument.
+    scene = blackhole.Scene.preset("default")
+    with pytest.raises(ValueError, match=re.escape(words)):
+        call(renderer, scene)
+    assert renderer.render(scene, 8, 8).shape == (8, 8, 4)
+
+
+def test_wrong_types_and_none_raise_type_error(renderer):
+    scene = blackhole.Scene.preset("default")
+    for call in [
+        lambda: renderer.render(None, 8, 8),
+        lambda: renderer.render(scene, "8", 8),
+        lambda: renderer.render(scene, 8.5, 8),
+        lambda: renderer.render(scene, None, 8),
+        lambda: renderer.aov(scene, None, 8, 8),
+        lambda: renderer.render(scene, 8, 8, time="0"),
+        lambda: scene.get(None),
+        lambda: blackhole.Scene.from_toml(None),
+        lambda: blackhole.isco(None),
+    ]:
+        with pytest.raises(TypeError):
+            call()
+    with pytest.raises(ValueError, match="not a scene value"):
+        scene.set("camera.vfov_deg", None)
+
+
+def test_outcome_refuses_what_is_not_a_geodesic_aov(renderer):
+    with pytest.raises(ValueError, match="geodesic AOV"):
+        blackhole.outcome(np.zeros(3))
+    with pytest.raises(ValueError, match="geodesic AOV"):
+        blackhole.outcome(np.zeros((2, 2, 3), dtype=np.float32))
+    odd = np.zeros((1, 3, 4), dtype=np.float32)
+    odd[0, :, 3] = [np.nan, -1.0, 2.0]
+    assert list(blackhole.outcome(odd)[0]) == ["unknown", "unknown", "disk"]
+
+
+def test_a_scene_edited_into_an_invalid_state_is_refused_and_kept():
+    scene = blackhole.Scene.preset("default")
+    before = scene.to_toml()
+    with pytest.raises(ValueError, match="fall_end_radius"):
+        scene.set("animation.fall_end_radius", 1e3)
+    with pytest.raises(ValueError, match="polarization.field"):
+        scene.set("polarization.field", [0.0, 0.0, 0.0])
+    assert scene.to_toml() == before
+
+
+def _run_python(script, env=None, timeout=120):
+    e = dict(os.environ)
+    e.update(env or {})
+    p = subprocess.run(
+        [sys.executable, "-c", script], capture_output=True, text=True, env=e, timeout=timeout
+    )
+    return p.returncode, p.stdout, p.stderr
+
+
+def test_a_lost_device_raises_device_error_on_every_call_and_never_hangs():
+    # BLACKHOLE_FAULT=device-lost: the first frame's wait returns
+    # ERROR_DEVICE_LOST while the GPU still runs it, as a real lost device
+    # does. Every later call raises DeviceError too (a lost device stays
+    # lost), closing works, and the process exits normally.
+    script = (
+        "import blackhole\n"
+        "r = blackhole.Renderer(); s = blackhole.Scene()\n"
+        "for call in [lambda: r.render(s, 16, 9), lambda: r.render(s, 16, 9),\n"
+        "             lambda: r.aov(s, 'geodesic', 8, 8), lambda: r.profile(s, 8, 8, frames=2)]:\n"
+        "    try:\n"
+        "        call(); print('rendered')\n"
+        "    except blackhole.DeviceError as e:\n"
+        "        print('lost' if 'lost' in str(e) else e)\n"
+        "r.close(); print('closed')\n"
+    )
+    code, out, err = _run_python(script, {"BLACKHOLE_FAULT": "device-lost"})
+    assert code == 0, err
+    assert out.split() == ["lost", "lost", "lost", "lost", "closed"], out + err
 
 
 def test_a_closed_renderer_raises_device_error():
@@ -187,6 +286,33 @@ def test_one_renderer_serves_several_threads(renderer):
     for t in threads:
         t.join()
     assert all(np.array_equal(g, want) for g in got)
+
+
+def test_threads_that_fail_leave_the_others_and_the_renderer_working(renderer):
+    scene = blackhole.Scene.preset("default")
+    want = renderer.render(scene, 32, 18)
+    results = [None] * 8
+
+    def work(i):
+        try:
+            if i % 2:
+                renderer.render(scene, 32, 18, spp=0 if i % 4 == 1 else 5000)
+            results[i] = renderer.render(scene, 32, 18)
+        except ValueError as e:
+            results[i] = e
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(8)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(timeout=120)
+    assert all(not t.is_alive() for t in threads)
+    for i, r in enumerate(results):
+        if i % 2:
+            assert isinstance(r, ValueError) and "spp" in str(r)
+        else:
+            assert np.array_equal(r, want)
+    assert renderer.validation_counts() == (0, 0)
 
 
 def test_the_physics_is_the_closed_form():
@@ -285,9 +411,11 @@ def test_ctrl_c_raises_keyboard_interrupt_within_a_sample():
         "r.render(s, 16, 16)\n"
         "print('started', flush=True)\n"
         "try:\n"
-        "    r.render(s, 320, 180, spp=4096)\n"
+        "    r.render(s, 320, 180, spp=1024)\n"
         "except KeyboardInterrupt:\n"
-        "    print('interrupted', flush=True); sys.exit(3)\n"
+        "    print('interrupted', flush=True)\n"
+        "    assert r.render(s, 16, 16).shape == (16, 16, 4)\n"
+        "    print('rendered again', flush=True); sys.exit(3)\n"
     )
     p = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
     assert p.stdout.readline().strip() == "started"
@@ -296,7 +424,8 @@ def test_ctrl_c_raises_keyboard_interrupt_within_a_sample():
     time.sleep(1.0)
     p.send_signal(signal.SIGINT)
     out, _ = p.communicate(timeout=60)
-    assert p.returncode == 3 and "interrupted" in out
+    # The renderer works after the interrupt.
+    assert p.returncode == 3 and "interrupted" in out and "rendered again" in out
 
 
 @pytest.mark.parametrize("name", ["spin_sweep", "shadow_width", "stokes_map"])
@@ -309,3 +438,26 @@ def test_the_examples_run_headless(tmp_path, name):
                          timeout=600)
     assert run.returncode == 0, run.stderr
     assert out.stat().st_size > 10_000
+
+
+@pytest.mark.parametrize("spin", [0.0, 0.9999, -0.9])
+def test_the_stokes_aov_has_no_nan_for_any_field_or_observer(renderer, spin):
+    # Fields along the line of sight, the disk's normal and the camera's
+    # axis, cameras face-on, edge-on, on the axis and far: where the angle
+    # is undefined (sin theta_B = 0, no polarized light) P = 0, never NaN.
+    cases = [
+        ("[0, 20, 0.0]", "[0, 1, 0]", "static"),
+        ("[0, 1, 20]", "[0, 0, 1]", "zamo"),
+        ("[3, 0.01, 0]", "[1, 0, 0]", "falling"),
+        ("[1e4, 1, 1]", "[0.3, 0.4, 0.5]", "orbiting"),
+        ("[0, -20, 0]", "[0, 1, 0]", "falling"),
+    ]
+    for position, field, observer in cases:
+        scene = blackhole.Scene.from_toml(
+            f"[[black_hole]]\nspin = {spin}\n[camera]\nposition = {position}\n"
+            f'look_at = [0, 0, 0]\nup = [0, 0, 1]\nobserver = "{observer}"\n'
+            f"[polarization]\nfield = {field}\n"
+        )
+        stokes = renderer.aov(scene, "stokes", 24, 14)
+        assert np.isfinite(stokes).all(), (spin, position, field, observer)
+    assert renderer.validation_counts() == (0, 0)

@@ -120,7 +120,7 @@ pub enum Command {
         /// Jittered samples per pixel (the same sub-pixel offsets every frame,
         /// so sequences are deterministic), averaged before bloom and the tone
         /// map: anti-aliased stills and sequences at N times the ray march.
-        #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1024))]
+        #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=i64::from(crate::render::MAX_SPP)))]
         spp: u32,
         /// The fraction of each frame's interval the shutter is open, in
         /// [0, 1] (overrides [animation] shutter): the --spp samples spread
@@ -154,10 +154,10 @@ pub enum Command {
         #[command(flatten)]
         view: View,
         /// Frames to time (after the warm-up frames).
-        #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u32).range(1..=100000))]
+        #[arg(long, default_value_t = 20, value_parser = clap::value_parser!(u32).range(1..=i64::from(profile::MAX_FRAMES)))]
         frames: u32,
         /// Frames rendered first and not timed (pipeline builds, allocation, caches).
-        #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(0..=10000))]
+        #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(0..=i64::from(profile::MAX_WARMUP)))]
         warmup: u32,
         /// Also write the figures as JSON.
         #[arg(long)]

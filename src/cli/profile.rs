@@ -109,6 +109,10 @@ pub struct Report {
     pub cpu: Vec<PassReport>,
 }
 
+/// The most frames `profile` times, and warms up with.
+pub const MAX_FRAMES: u32 = 100_000;
+pub const MAX_WARMUP: u32 = 10_000;
+
 /// Renders `warmup` untimed frames (pipeline builds, allocation) and then
 /// `frames` timed ones; the report and each timed frame's timings.
 pub fn run_frames(
@@ -121,6 +125,11 @@ pub fn run_frames(
 ) -> Result<(Report, Vec<FrameTimings>)> {
     for _ in 0..warmup {
         r.render(scene, width, height, OutputKind::Ldr)?;
+    }
+    if !(1..=MAX_FRAMES).contains(&frames) || warmup > MAX_WARMUP {
+        return Err(Error::Usage(format!(
+            "profile frames = {frames}, warmup = {warmup}: frames must be 1 to {MAX_FRAMES}, warmup 0 to {MAX_WARMUP}"
+        )));
     }
     let mut all: Vec<FrameTimings> = Vec::with_capacity(frames as usize);
     for _ in 0..frames {

@@ -18,6 +18,7 @@ use std::sync::Arc;
 use ash::vk;
 
 pub use crate::features::{Features, RendererOptions};
+pub use offscreen::MAX_SPP;
 pub use pipelines::Pipelines;
 pub use recipe::{Accumulation, HdrSource, PostSettings, add_frame};
 pub use slots::{FRAMES_IN_FLIGHT, FrameSlot};
@@ -107,7 +108,15 @@ impl Renderer {
     /// outlived it: every Vulkan object holds the device, so a device still
     /// referenced afterwards means a leaked object (and its memory).
     pub fn shutdown(mut self) -> Result<()> {
-        self.wait_idle()?;
+        // A lost device has nothing left to finish: its objects are
+        // destroyed all the same, and closing it is not an error.
+        match self.wait_idle() {
+            Err(Error::Vulkan {
+                result: vk::Result::ERROR_DEVICE_LOST,
+                ..
+            }) => log::debug!("shutting down a lost device"),
+            other => other?,
+        }
         let device = Arc::downgrade(&self.gpu);
         drop(self);
         match device.upgrade() {

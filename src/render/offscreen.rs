@@ -20,6 +20,9 @@ use crate::scene::{DiskKind, Scene};
 use crate::vk::{Access, Buffer, BufferBinding, ImageBinding, ImageDesc};
 use crate::{Error, Result};
 
+/// The most jittered samples a pixel (`--spp`, the Python `spp=`).
+pub const MAX_SPP: u32 = 1024;
+
 impl Renderer {
     /// Renders `scene` at `width` x `height` offscreen and reads the result
     /// back (waits for it).
@@ -104,6 +107,11 @@ impl Renderer {
         kind: OutputKind,
         spp: u32,
     ) -> Result<Frame> {
+        if spp == 0 || spp > MAX_SPP {
+            return Err(Error::Usage(format!(
+                "spp = {spp}: must be 1 to {MAX_SPP} samples a pixel"
+            )));
+        }
         // The AOVs and the polarized picture describe the rays through the
         // pixel centres: one sample.
         if spp <= 1 || kind.is_aov() || sample_scene(0).polarization.enabled {

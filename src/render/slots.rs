@@ -183,7 +183,10 @@ impl FrameSlot {
                 "the GPU did not finish the frame within {} s (BLACKHOLE_GPU_TIMEOUT_S)",
                 self.commands.timeout().as_secs_f64()
             ),
-            vk::Result::ERROR_DEVICE_LOST => "the GPU device was lost".to_string(),
+            vk::Result::ERROR_DEVICE_LOST => {
+                "the GPU device was lost (it stays lost: start again with a new renderer)"
+                    .to_string()
+            }
             vk::Result::ERROR_OUT_OF_DEVICE_MEMORY | vk::Result::ERROR_OUT_OF_HOST_MEMORY => {
                 "the GPU ran out of memory".to_string()
             }

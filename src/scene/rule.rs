@@ -30,7 +30,7 @@ pub(super) fn apart(x: f64, other: f64) -> String {
 
 /// `x` to `digits` significant digits: fixed point from 1e-4 to 1e9,
 /// scientific beyond.
-fn significant(x: f64, digits: usize) -> String {
+pub(super) fn significant(x: f64, digits: usize) -> String {
     if x == 0.0 || !x.is_finite() {
         return format!("{x}");
     }

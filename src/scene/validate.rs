@@ -231,7 +231,10 @@ impl Scene {
         let (rs, spin) = self.first_hole();
         let isco = crate::spacetime::radii::isco(rs, spin.clamp(-1.0, 1.0));
         if self.inner_is_isco() {
-            format!("\"isco\": {isco}, the ISCO of black_hole[0] with rs = {rs} and spin = {spin}")
+            format!(
+                "\"isco\": {}, the ISCO of black_hole[0] with rs = {rs} and spin = {spin}",
+                super::rule::significant(isco, 5)
+            )
         } else {
             format!("{}", self.disk.inner_radius)
         }

@@ -1,0 +1,122 @@
+//! Round four of the hostile user, each test named after the hazard: a
+//! contradictory fall, derived values quoted as if written, empty
+//! environment variables, messages whose digits contradict them, and the
+//! same refusal worded two ways. Every refusal is one line, exit status 2,
+//! before any GPU work, and leaves no file behind.
+
+mod common;
+
+use common::{assert_clean, blackhole, path_in, refused_early, render_scene, run, scratch};
+
+fn refused(toml: &str) -> String {
+    let dir = scratch();
+    let out = path_in(&dir, "x.png");
+    let e = refused_early(render_scene(
+        &dir,
+        toml,
+        &["--out", out.to_str().expect("utf-8")],
+    ));
+    assert!(!out.exists(), "no output after a refusal");
+    e
+}
+
+#[test]
+fn a_fall_that_ends_above_its_start_is_refused_naming_both_radii() {
+    let e = refused(
+        "[camera]\nposition = [0.0, 0.0, 4.0]\nobserver = \"falling\"\n\
+         [animation]\ncamera = \"fall\"\nfall_end_radius = 6.0\n",
+    );
+    assert!(
+        e.contains("fall_end_radius = 6") && e.contains("starts 4.000 rs") && e.contains(":6:"),
+        "{e}"
+    );
+    // The same for the window's fall (F), whatever the animation's camera.
+    let e = refused("[camera]\nposition = [0.0, 0.0, 4.0]\n[animation]\nfall_end_radius = 4.0\n");
+    assert!(e.contains("inward"), "{e}");
+}
+
+#[test]
+fn a_value_derived_from_another_key_names_the_key_that_made_it() {
+    // rs = 1e9 (the top of its range): the default inner radius, the ISCO
+    // (3e9), is no longer quoted as if the user had written it.
+    let e = refused("[[black_hole]]\nrs = 1e8\n[camera]\nposition = [0.0, 0.0, 9e8]\n");
+    assert!(
+        e.contains("disk.outer_radius = 12 (the default")
+            && e.contains("the ISCO of black_hole[0] with rs = 100000000"),
+        "{e}"
+    );
+    let e = refused("[[black_hole]]\nrs = 1e9\n");
+    assert!(
+        e.contains("camera.position = [0, 0.8, -15] (the default"),
+        "{e}"
+    );
+    // With no disk to draw the derived radius is not checked at all.
+    let dir = scratch();
+    let out = path_in(&dir, "x.png");
+    let toml = "[[black_hole]]\nrs = 1e9\n[disk]\nkind = \"none\"\n\
+                [camera]\nposition = [0.0, 0.0, 5e8]\nobserver = \"falling\"\n";
+    let (code, stdout, stderr) = run(render_scene(
+        &dir,
+        toml,
+        &["--out", out.to_str().expect("utf-8")],
+    ));
+    assert_clean(code, &stdout, &stderr);
+    assert!(out.exists());
+}
+
+#[test]
+fn an_empty_environment_variable_is_refused_like_any_bad_value() {
+    for name in [
+        "BLACKHOLE_NO_QUAD",
+        "BLACKHOLE_NO_SPLIT",
+        "BLACKHOLE_NO_F64",
+        "BLACKHOLE_NO_BAKE",
+        "BLACKHOLE_VALIDATION",
+        "BLACKHOLE_GPU_TIMEOUT_S",
+    ] {
+        let dir = scratch();
+        let mut c = blackhole();
+        c.env(name, "")
+            .args(["render", "--out"])
+            .arg(path_in(&dir, "x.png"));
+        let e = refused_early(c);
+        assert!(e.contains(name) && e.contains("empty"), "{e}");
+    }
+    // (refused_early names a device of its own: this one by hand.)
+    let mut c = blackhole();
+    c.env("BLACKHOLE_DEVICE", "")
+        .args(["render", "--out", "/nonexistent/x.png"]);
+    let (code, _, stderr) = run(c);
+    assert!(
+        code == 2 && stderr.contains("BLACKHOLE_DEVICE is set but empty"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn a_refusal_prints_enough_digits_to_show_why() {
+    let e = refused("[camera]\nposition = [0.0, 0.0, 0.04999999]\nobserver = \"falling\"\n");
+    assert!(
+        e.contains("is 0.04999999 rs") && e.contains("r >= 0.05"),
+        "{e}"
+    );
+    let e = refused("[camera]\nposition = [0.0, 0.0, 1.4999999]\nobserver = \"orbiting\"\n");
+    assert!(e.contains("r = 1.4999999 <= 1.5 rs"), "{e}");
+}
+
+#[test]
+fn an_observer_inside_any_horizon_is_refused_in_one_wording() {
+    let plain = refused("[camera]\nposition = [0.0, 0.0, 0.5]\nobserver = \"static\"\n");
+    let spinning = refused(
+        "[[black_hole]]\nspin = 0.9\n[camera]\nposition = [0.0, 0.0, 0.5]\nobserver = \"zamo\"\n",
+    );
+    for e in [&plain, &spinning] {
+        assert!(
+            e.contains("camera.position = [0, 0, 0.5]")
+                && e.contains("is inside the horizon of black_hole[0]")
+                && e.contains("set observer = \"falling\""),
+            "{e}"
+        );
+    }
+    assert!(plain.contains("r+ = 1.000 rs") && spinning.contains("r+ = 0.7179 rs"));
+}
