@@ -120,3 +120,48 @@ fn an_observer_inside_any_horizon_is_refused_in_one_wording() {
     }
     assert!(plain.contains("r+ = 1.000 rs") && spinning.contains("r+ = 0.7179 rs"));
 }
+
+#[test]
+fn every_polarization_key_is_checked_whether_or_not_the_picture_is_on() {
+    // The picture off (the default), and in scenes it could not draw: the
+    // volumetric disk, two holes, gravity off. A bad value is refused by
+    // its key in each (it would be drawn once the picture is turned on,
+    // or read by --aov stokes).
+    let scenes = [
+        "",
+        "[disk]\nkind = \"volumetric\"\ninner_radius = 3.0\n",
+        "[[black_hole]]\nposition = [-3.0, 0.0, 0.0]\n[[black_hole]]\nposition = [3.0, 0.0, 0.0]\n",
+        "[physics]\ngravity = false\n",
+    ];
+    let bad = [
+        ("field", "[0.0, 0.0, 0.0]"),
+        ("field", "[nan, 0.0, 1.0]"),
+        ("field", "[1e10, 0.0, 0.0]"),
+        ("spectral_index", "nan"),
+        ("spectral_index", "9.0"),
+        ("emissivity_index", "-11.0"),
+        ("fraction", "1.5"),
+        ("fraction", "-0.1"),
+        ("tick_cut", "2.0"),
+        ("beam", "-1.0"),
+        ("beam", "inf"),
+        ("beam", "1e7"),
+        ("mass_msun", "0.0"),
+        ("mass_msun", "1e13"),
+        ("distance_pc", "-5.0"),
+        ("distance_pc", "nan"),
+        ("annulus", "[5.0, 2.0]"),
+        ("annulus", "[-1.0, 2.0]"),
+        ("fields", "[[0.0, 0.0, 0.0]]"),
+        ("ticks", "100000"),
+    ];
+    for base in scenes {
+        for (key, value) in bad {
+            let e = refused(&format!("{base}[polarization]\n{key} = {value}\n"));
+            assert!(
+                e.contains(&format!("polarization.{key}")),
+                "{base}{key} = {value}: {e}"
+            );
+        }
+    }
+}
