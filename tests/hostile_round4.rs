@@ -165,3 +165,32 @@ fn every_polarization_key_is_checked_whether_or_not_the_picture_is_on() {
         }
     }
 }
+
+#[test]
+fn a_stokes_aov_the_scene_cannot_have_is_refused_before_the_gpu() {
+    for (toml, words) in [
+        (
+            "[camera]\nposition = [0.0, 0.1, 0.5]\nobserver = \"falling\"\n",
+            "0.509902 rs from the centre",
+        ),
+        (
+            "[[black_hole]]\nposition = [-3.0, 0.0, 0.0]\n[[black_hole]]\nposition = [3.0, 0.0, 0.0]\n",
+            "one hole",
+        ),
+        ("[physics]\ngravity = false\n", "gravity on"),
+        (
+            "[disk]\nkind = \"volumetric\"\ninner_radius = 3.0\n",
+            "volumetric",
+        ),
+    ] {
+        let dir = scratch();
+        let out = path_in(&dir, "s.exr");
+        let args = ["--aov", "stokes", "--out", out.to_str().expect("utf-8")];
+        let e = refused_early(render_scene(&dir, toml, &args));
+        assert!(
+            e.contains("--aov stokes") && e.contains(words),
+            "{toml}: {e}"
+        );
+        assert!(!out.exists());
+    }
+}

@@ -148,50 +148,13 @@ pub fn run(view: View, out: PathBuf, options: Options) -> Result<ExitCode, Error
         return job.video(range, container);
     }
     let format = FileFormat::from_path(&out)?;
-    if aov != Aov::Beauty && format != FileFormat::Exr {
-        return Err(Error::Usage(format!(
-            "--aov {} writes float data: give an .exr --out, not {}",
-            aov.name(),
-            out.display()
-        )));
-    }
-    if scene.polarization.enabled && aov == Aov::Beauty && format == FileFormat::Exr {
-        return Err(Error::Usage(format!(
-            "--out {}: the polarized picture ([polarization] enabled = true) is drawn in 8 bits (.png or video); `--aov stokes` writes its Stokes parameters as EXR",
-            out.display()
-        )));
-    }
-    if exr_post && (format != FileFormat::Exr || aov != Aov::Beauty) {
-        return Err(Error::Usage(
-            "--exr-post applies to the image (--aov beauty) written as .exr".into(),
-        ));
-    }
-    if aov != Aov::Beauty && scene.disk.kind == crate::scene::DiskKind::Volumetric {
-        return Err(Error::Usage(format!(
-            "--aov {} needs a thin disk (or none); this scene's disk is volumetric",
-            aov.name()
-        )));
-    }
-    if let Some(path) = &json {
-        if aov != Aov::Stokes || frames.is_some() {
-            return Err(Error::Usage(
-                "--json writes the numbers of a still's --aov stokes (give --aov stokes and no --frames)".into(),
-            ));
-        }
-        Output {
-            flag: "--json",
-            path,
-            extensions: &["json"],
-            what: "JSON",
-        }
-        .check(&scene.input_files(), None)?;
-        if outputs::same_file(path, &out) {
-            return Err(Error::Usage(format!(
-                "--json {} and --out name the same file",
-                path.display()
-            )));
-        }
-    }
+    let request = ImageRequest {
+        aov,
+        exr_post,
+        json: &json,
+        frames: &frames,
+    };
+    check_image_request(&scene, &request, format, &out)?;
     // (A still with the shutter open samples frame 0's interval.)
     scene.check_frames(frames.as_ref().unwrap_or(&(0..1)), spp)?;
     let kind = match aov {
@@ -447,4 +410,81 @@ impl Job<'_> {
         }
         Ok(done)
     }
+}
+
+/// What a still or a numbered sequence asks to write besides the image.
+struct ImageRequest<'a> {
+    aov: Aov,
+    exr_post: bool,
+    json: &'a Option<PathBuf>,
+    frames: &'a Option<Range<u64>>,
+}
+
+/// The image outputs' rules (an AOV's file, the polarized picture,
+/// --exr-post, --aov stokes's camera, --json), checked before the GPU starts.
+fn check_image_request(
+    scene: &Scene,
+    request: &ImageRequest<'_>,
+    format: FileFormat,
+    out: &Path,
+) -> Result<(), Error> {
+    let ImageRequest {
+        aov,
+        exr_post,
+        json,
+        frames,
+    } = *request;
+    if aov != Aov::Beauty && format != FileFormat::Exr {
+        return Err(Error::Usage(format!(
+            "--aov {} writes float data: give an .exr --out, not {}",
+            aov.name(),
+            out.display()
+        )));
+    }
+    if scene.polarization.enabled && aov == Aov::Beauty && format == FileFormat::Exr {
+        return Err(Error::Usage(format!(
+            "--out {}: the polarized picture ([polarization] enabled = true) is drawn in 8 bits (.png or video); `--aov stokes` writes its Stokes parameters as EXR",
+            out.display()
+        )));
+    }
+    if exr_post && (format != FileFormat::Exr || aov != Aov::Beauty) {
+        return Err(Error::Usage(
+            "--exr-post applies to the image (--aov beauty) written as .exr".into(),
+        ));
+    }
+    if aov != Aov::Beauty && scene.disk.kind == crate::scene::DiskKind::Volumetric {
+        return Err(Error::Usage(format!(
+            "--aov {} needs a thin disk (or none); this scene's disk is volumetric",
+            aov.name()
+        )));
+    }
+    // (The still's camera here; a sequence's others as each frame starts.)
+    if aov == Aov::Stokes
+        && let Some(why) = scene
+            .spacetime()
+            .polarization_refusal(&scene.camera.viewer())
+    {
+        return Err(Error::Usage(format!("--aov stokes {why}")));
+    }
+    if let Some(path) = &json {
+        if aov != Aov::Stokes || frames.is_some() {
+            return Err(Error::Usage(
+            "--json writes the numbers of a still's --aov stokes (give --aov stokes and no --frames)".into(),
+        ));
+        }
+        Output {
+            flag: "--json",
+            path,
+            extensions: &["json"],
+            what: "JSON",
+        }
+        .check(&scene.input_files(), None)?;
+        if outputs::same_file(path, out) {
+            return Err(Error::Usage(format!(
+                "--json {} and --out name the same file",
+                path.display()
+            )));
+        }
+    }
+    Ok(())
 }

@@ -241,7 +241,8 @@ impl Spacetime {
                 let r = (viewer.position - h.position).length();
                 if r <= h.rs {
                     return Some(format!(
-                        "needs a camera outside the horizon; this one is at {r} (rs = {})",
+                        "needs a camera outside the horizon; this one is {} rs from the centre (rs = {})",
+                        radii::shown_inside(r / h.rs),
                         h.rs
                     ));
                 }

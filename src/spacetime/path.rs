@@ -45,7 +45,8 @@ impl Spacetime {
             let r = (x0 - h.position).length();
             if !matches!(self.metric, Metric::Flat(_)) {
                 return Err(format!(
-                    "needs a camera outside the horizon; this one is at {r} from a hole of rs = {}",
+                    "needs a camera outside the horizon; this one is {} rs from the centre of a hole of rs = {}",
+                    super::radii::shown_inside(r / h.rs),
                     h.rs
                 ));
             }
