@@ -21,6 +21,7 @@ pub mod app;
 pub mod camera;
 pub mod cli;
 pub mod deferred;
+pub mod digits;
 pub mod error;
 pub mod features;
 pub mod frame;

@@ -171,7 +171,7 @@ fn a_stokes_aov_the_scene_cannot_have_is_refused_before_the_gpu() {
     for (toml, words) in [
         (
             "[camera]\nposition = [0.0, 0.1, 0.5]\nobserver = \"falling\"\n",
-            "0.509902 rs from the centre",
+            "0.5099 rs from the centre",
         ),
         (
             "[[black_hole]]\nposition = [-3.0, 0.0, 0.0]\n[[black_hole]]\nposition = [3.0, 0.0, 0.0]\n",

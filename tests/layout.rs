@@ -279,6 +279,15 @@ fn constants_mirrored_in_rust_match_the_glsl_source() {
     ] {
         assert_eq!(define(composite, name), f64::from(rust), "{name}");
     }
+    // Where a path's roots take the far form (the f64 reference and the
+    // shader must switch at the same lambda^2 + eta).
+    let radial = include_str!("../shaders/include/kerr/radial.glsl");
+    let far = radial
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("const float KERR_FAR_ROOTS = "))
+        .and_then(|v| v.trim_end_matches(';').parse::<f64>().ok())
+        .expect("const float KERR_FAR_ROOTS in kerr/radial.glsl");
+    assert_eq!(far, blackhole::physics::kerr::radial::FAR_ROOTS);
     // Observer kinds: the Rust enum's discriminants are what the host writes.
     use blackhole::physics::observer::ObserverKind;
     for (name, kind) in [

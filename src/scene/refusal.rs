@@ -5,7 +5,8 @@
 
 use super::Camera;
 use super::locate::Seg::{self, Key};
-use super::rule::{Check, apart, fail, vec3};
+use super::rule::{Check, fail, vec3};
+use crate::digits::apart;
 use crate::spacetime::{EndRefusal, FALLING_MIN_R, Refusal};
 
 /// Why the camera's observer cannot stand where it is

@@ -233,7 +233,7 @@ impl Scene {
         if self.inner_is_isco() {
             format!(
                 "\"isco\": {}, the ISCO of black_hole[0] with rs = {rs} and spin = {spin}",
-                super::rule::significant(isco, 5)
+                crate::digits::significant(isco, 5)
             )
         } else {
             format!("{}", self.disk.inner_radius)

@@ -242,7 +242,7 @@ impl Spacetime {
                 if r <= h.rs {
                     return Some(format!(
                         "needs a camera outside the horizon; this one is {} rs from the centre (rs = {})",
-                        radii::shown_inside(r / h.rs),
+                        crate::digits::apart(r / h.rs, 1.0),
                         h.rs
                     ));
                 }

@@ -46,7 +46,7 @@ impl Spacetime {
             if !matches!(self.metric, Metric::Flat(_)) {
                 return Err(format!(
                     "needs a camera outside the horizon; this one is {} rs from the centre of a hole of rs = {}",
-                    super::radii::shown_inside(r / h.rs),
+                    crate::digits::apart(r / h.rs, 1.0),
                     h.rs
                 ));
             }

@@ -82,16 +82,6 @@ pub fn page_thorne_peak(spin: f64) -> f64 {
     kerr::page_thorne_peak(spin).1
 }
 
-/// A distance inside a horizon (in rs, below 1) as a message prints it: six
-/// decimals, or every digit where six would round it up to the horizon.
-pub fn shown_inside(r: f64) -> String {
-    if r < 0.9999995 {
-        format!("{r:.6}")
-    } else {
-        format!("{r}")
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
