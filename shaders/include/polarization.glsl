@@ -59,6 +59,29 @@ pvec2 pol_kappa_camera(preal r, preal c, preal a, pvec4 p, pvec4 f) {
     return pvec2(ka * r + kb * im_r, ka * im_r - kb * r);
 }
 
+// kappa of p and f given on the falling frame (u, e_r, e_theta, e_phi; the
+// frame of kerr/interior.glsl's falling camera) at Boyer-Lindquist (r, c)
+// of spin a, in preal: its parts X, Y, sin(theta) Z, W in ingoing Kerr
+// components, where every axis is finite through r+ (the 1 / Delta of the
+// Boyer-Lindquist ones cancels: q = sqrt(r^2 + a^2), f = sqrt(2 r); the
+// Rust twin's falling_parts).
+pvec2 pol_kappa_falling(preal r, preal c, preal a, pvec4 p, pvec4 f) {
+    preal s = sqrt(max(1.0 - c * c, 0.0));
+    preal q = sqrt(r * r + a * a), fall = sqrt(2.0 * r), qf = q + fall;
+    preal sig = r * r + a * a * c * c, delta = r * r - 2.0 * r + a * a;
+    preal big_a = q * q * q * q - a * a * delta * s * s;
+    preal sa = sqrt(big_a), k = sqrt(sig / big_a);
+    // Each part over the axes u, e_r, e_theta, e_phi.
+    pvec4 xs = pvec4(q / qf, (q * q * q - a * a * s * s * qf) / (qf * sa), 0.0, -a * s * k);
+    pvec4 ys = pvec4(-q * fall / sig, sa / sig, 0.0, 0.0);
+    pvec4 zs = pvec4(-a * s, s * a * q * fall / sa, 0.0, q * q * k);
+    pvec4 ws = pvec4(0.0, 0.0, 1.0 / sqrt(sig), 0.0);
+    preal ka = dot(p, xs) * dot(f, ys) - dot(p, ys) * dot(f, xs);
+    preal kb = dot(p, zs) * dot(f, ws) - dot(p, ws) * dot(f, zs);
+    preal im_r = -a * c;
+    return pvec2(ka * r + kb * im_r, ka * im_r - kb * r);
+}
+
 // The same at an equatorial emitter (cos theta = 0), in 32 bits.
 vec2 pol_kappa_equator(float r, float a, vec4 p, vec4 f) {
     float rho2 = r * r + a * a, delta = r * r - 2.0 * r + a * a;

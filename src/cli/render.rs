@@ -458,11 +458,8 @@ fn check_image_request(
             aov.name()
         )));
     }
-    // (The still's camera here; a sequence's others as each frame starts.)
     if aov == Aov::Stokes
-        && let Some(why) = scene
-            .spacetime()
-            .polarization_refusal(&scene.camera.viewer())
+        && let Some(why) = scene.spacetime().polarization_refusal()
     {
         return Err(Error::Usage(format!("--aov stokes {why}")));
     }

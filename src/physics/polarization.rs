@@ -226,8 +226,13 @@ pub fn emitted_intensity(e: &Emission, r: f64, sin_b: f64, k_z: f64) -> f64 {
 /// atan2(-c2, c1). `p`, `n`, `w`: the photon and the sky's north and west,
 /// ZAMO components at `z`.
 pub fn angle_at_camera(z: &Zamo, kappa: Complex64, p: [f64; 4], n: [f64; 4], w: [f64; 4]) -> f64 {
-    let kn = walker_penrose(z, p, n);
-    let kw = walker_penrose(z, p, w);
+    angle_of(kappa, walker_penrose(z, p, n), walker_penrose(z, p, w))
+}
+
+/// The angle east of north of the electric vector whose constant is
+/// `kappa`, given kappa(p, n) = `kn` and kappa(p, w) = `kw` at the camera
+/// in any frame (see [`angle_at_camera`]).
+pub fn angle_of(kappa: Complex64, kn: Complex64, kw: Complex64) -> f64 {
     let det = kn.re * kw.im - kw.re * kn.im;
     let c1 = (kappa.re * kw.im - kw.re * kappa.im) / det;
     let c2 = (kn.re * kappa.im - kappa.re * kn.im) / det;

@@ -280,10 +280,8 @@ impl Renderer {
     /// non-rotating hole in the spinning hole's form at a* = 0 where the
     /// device has 64-bit floats ([`Spacetime::spinning_form`]: its camera
     /// and roots in f64, exact for far cameras and deep inside the
-    /// horizon), except for a `"flat"` camera (the comparison mapping) and
-    /// a Stokes AOV whose camera that form's polarization refuses (a
-    /// falling camera within 5 % of the horizon). Every other frame keeps
-    /// `spacetime`.
+    /// horizon), except for a `"flat"` camera (the comparison mapping).
+    /// Every other frame keeps `spacetime`.
     fn aov_form(
         &self,
         scene: &Scene,
@@ -298,12 +296,8 @@ impl Renderer {
             return spacetime;
         }
         match spacetime.spinning_form() {
-            Some(form)
-                if output != OutputKind::Stokes || form.polarization_refusal(&viewer).is_none() =>
-            {
-                Arc::new(form)
-            }
-            _ => spacetime,
+            Some(form) => Arc::new(form),
+            None => spacetime,
         }
     }
 

@@ -51,9 +51,7 @@ impl Renderer {
             ));
         }
         if kind == OutputKind::Stokes
-            && let Some(why) = scene
-                .spacetime()
-                .polarization_refusal(&scene.camera.viewer())
+            && let Some(why) = scene.spacetime().polarization_refusal()
         {
             return Err(Error::Usage(format!("--aov stokes {why}")));
         }

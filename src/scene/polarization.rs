@@ -248,7 +248,7 @@ impl Scene {
                 true,
                 "the polarized picture is of the thin disk; this scene's disk is volumetric (docs/polarization.md)",
             )?;
-            if let Some(why) = self.spacetime().polarization_refusal(&self.camera.viewer()) {
+            if let Some(why) = self.spacetime().polarization_refusal() {
                 return fail(
                     &key("enabled"),
                     true,

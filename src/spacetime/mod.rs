@@ -224,39 +224,18 @@ impl Spacetime {
     }
 
     /// Why the polarized thin disk (`--aov stokes`) cannot be computed for
-    /// this camera, if it cannot: it is carried in closed form for one hole
-    /// (spinning or not) and a camera outside the horizon (docs/polarization.md).
-    pub fn polarization_refusal(&self, viewer: &Viewer) -> Option<String> {
+    /// this scene, if it cannot: it is carried in closed form for one hole
+    /// (spinning or not), for every camera the scene can hold, outside the
+    /// horizon and falling through it (docs/polarization.md).
+    pub fn polarization_refusal(&self) -> Option<String> {
         match &self.metric {
-            Metric::Flat(_) => {
-                return Some("needs gravity on (physics.gravity = true)".into());
-            }
-            Metric::Summed(h) => {
-                return Some(format!(
-                    "is exact for one hole; this scene has {} (their paths are integrated)",
-                    h.len()
-                ));
-            }
-            Metric::Schwarzschild(h) => {
-                let r = (viewer.position - h.position).length();
-                if r <= h.rs {
-                    return Some(format!(
-                        "needs a camera outside the horizon; this one is {} rs from the centre (rs = {})",
-                        crate::digits::apart(r / h.rs, 1.0),
-                        h.rs
-                    ));
-                }
-            }
-            Metric::Kerr(_) => {
-                if self.camera_inside_spinning(viewer) {
-                    return Some(
-                        "needs a camera outside the horizon and its 5% band (the falling frame's)"
-                            .into(),
-                    );
-                }
-            }
+            Metric::Flat(_) => Some("needs gravity on (physics.gravity = true)".into()),
+            Metric::Summed(h) => Some(format!(
+                "is exact for one hole; this scene has {} (their paths are integrated)",
+                h.len()
+            )),
+            Metric::Schwarzschild(_) | Metric::Kerr(_) => None,
         }
-        None
     }
 
     /// Whether a camera is a falling camera between a spinning hole's

@@ -161,7 +161,9 @@ float kerr_disk_light(inout Hit hit, int stop, float rc, float to_m, vec3 pos, f
 // of sn cn; cases 3 and 4: s_r throughout) and the polar one alternating
 // from the camera's (s_th (-1)^(n + h)); at the camera the photon along the
 // ZAMO's d and the sky's north and west across the observer's own
-// direction, boosted into the ZAMO's frame.
+// direction, boosted into the ZAMO's frame. A falling camera between the
+// horizons or in their band (KERR_INSIDE) has them on its own frame, the
+// metric's falling frame (kerr/interior.glsl), unboosted.
 vec4 kerr_polarization(KerrCamera cam, KerrRadial rad, KerrAngular ang, KerrPoint e, int n, float rc,
                        vec3 d) {
     float s_r = rad.kcase <= 2 ? e.sgn * (e.fold ? -1.0 : 1.0) : rad.s_r;
@@ -182,7 +184,7 @@ vec4 kerr_polarization(KerrCamera cam, KerrRadial rad, KerrAngular ang, KerrPoin
 #endif
     kvec3 nn = normalize(up - dot(up, dobs) * dobs);
     kvec3 ww = cross(nn, dobs);
-    kvec3 beta = OBSERVER_MOVES ? kerr_hole_frame(P.observer.velocity) : kvec3(0.0);
+    kvec3 beta = OBSERVER_MOVES && !KERR_INSIDE ? kerr_hole_frame(P.observer.velocity) : kvec3(0.0);
     pvec4 n4 = pol_boost(beta, 0.0, nn), w4 = pol_boost(beta, 0.0, ww);
     n4 = pvec4(n4.x, dot(n4.yzw, er), dot(n4.yzw, et), dot(n4.yzw, ep));
     w4 = pvec4(w4.x, dot(w4.yzw, er), dot(w4.yzw, et), dot(w4.yzw, ep));
@@ -192,8 +194,14 @@ vec4 kerr_polarization(KerrCamera cam, KerrRadial rad, KerrAngular ang, KerrPoin
     // kappa(p, e_t) ~ r: at 2e4 rs an error of 4e-4 rad, which this takes.
     n4.x = dot(n4.yzw, p.yzw) / p.x;
     w4.x = dot(w4.yzw, p.yzw) / p.x;
-    vec2 kn = vec2(pol_kappa_camera(cam.r, cam.c, cam.a, p, n4));
-    vec2 kw = vec2(pol_kappa_camera(cam.r, cam.c, cam.a, p, w4));
+    vec2 kn, kw;
+    if (KERR_INSIDE) {
+        kn = vec2(pol_kappa_falling(cam.r, cam.c, cam.a, p, n4));
+        kw = vec2(pol_kappa_falling(cam.r, cam.c, cam.a, p, w4));
+    } else {
+        kn = vec2(pol_kappa_camera(cam.r, cam.c, cam.a, p, n4));
+        kw = vec2(pol_kappa_camera(cam.r, cam.c, cam.a, p, w4));
+    }
     return pol_of(em, pol_angle(em.xy, kn, kw));
 }
 
@@ -289,7 +297,7 @@ Hit metric_trace(vec3 x, vec3 d) {
             hit.outcome = OUT_DISK;
             hit.pos = pos;
             hit.g = g;
-            if (POLARIZATION != POL_OFF && !KERR_INSIDE) {
+            if (POLARIZATION != POL_OFF) {
                 hit.pol = kerr_polarization(cam, rad, ang, end, from - 1, rc, d);
             }
             hit.delay = delay;

@@ -110,8 +110,12 @@ vec4 schwarzschild_polarization(LightPath path, float phi, float u, float cb, ve
     vec3 k_hat = -normalize((-du / (u * sqrt(max(1.0 - u, 1e-12)))) * r_hat + cross(nrm, r_hat));
     vec4 em = pol_emit_static(1.0 / u, r_hat, P.disk.normal, k_hat);
     vec3 rel = pol_origin - c;
-    vec3 beta = RAIN_FORM ? -P.observer.fall_speed * P.observer.radial
-              : OBSERVER_MOVES ? P.observer.velocity : vec3(0.0);
+    // A falling camera (RAIN_FORM) has them on its own frame, outside, at
+    // and inside the horizon: the constant's form is the static frame's in
+    // any frame boosted from it along r_hat (p^0 f_r - p_r f^0 is
+    // invariant under that boost, p x f . r_hat does not change), and the
+    // rain frame is one, continued through the horizon.
+    vec3 beta = !RAIN_FORM && OBSERVER_MOVES ? P.observer.velocity : vec3(0.0);
     vec4 k = pol_camera_static(length(rel) / rs, normalize(rel), beta);
     return pol_of(em, pol_angle(em.xy, k.xy, k.zw));
 }

@@ -197,6 +197,14 @@ pub fn to_zamo_frame(d: DVec3, beta: DVec3) -> (DVec3, f64) {
 /// ask; at 1e-8 rs every pixel was NaN).
 pub const FALLING_FRAME_BAND: f64 = 5e-2;
 
+/// Whether a falling camera at world point `p` (M units) of a hole of spin
+/// `a` takes its photons from the falling frame built from the metric
+/// (between the horizons, or within [`FALLING_FRAME_BAND`] of r+ outside)
+/// instead of the ZAMO's.
+pub fn in_falling_band(p: DVec3, a: f64) -> bool {
+    LocalFrame::at(p, a).r < (1.0 + FALLING_FRAME_BAND) * r_horizon(a)
+}
+
 /// How far past the inner horizon's r- a falling camera may not go, as a
 /// fraction of r-: the continued path's inner pole sits that close behind
 /// the camera, and the quadrature of the azimuth (kerr/interior.glsl) keeps

@@ -34,7 +34,7 @@ use glam::DVec3;
 
 pub use frame::{
     Constants, FALLING_FRAME_BAND, KerrObserver, LocalFrame, PlacementError, boyer_lindquist_r,
-    falling_floor, observer_velocity, r_horizon, r_inner_horizon, to_zamo_frame,
+    falling_floor, in_falling_band, observer_velocity, r_horizon, r_inner_horizon, to_zamo_frame,
 };
 use radial::Radial;
 

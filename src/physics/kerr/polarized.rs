@@ -2,7 +2,9 @@
 //! hole, in closed form: the first crossing of the disk's annulus
 //! (mod.rs), the photon's ZAMO-frame momentum there from its constants and
 //! the signs of the backward motion, the emission (physics/polarization.rs)
-//! and the Walker-Penrose constant solved at the camera. The GPU's twin is
+//! and the Walker-Penrose constant solved at the camera (a falling camera
+//! between the horizons or just outside them on its own frame: inside.rs).
+//! The GPU's twin is
 //! shaders/include/polarization.glsl; the independent reference,
 //! transport.rs, integrates the parallel transport instead.
 
@@ -10,8 +12,12 @@ use glam::DVec3;
 
 use super::angular::Ordinary;
 use super::radial::{Radial, r_potential};
-use super::{KerrDisk, KerrObserver, first_disk_crossing, observer_velocity, to_zamo_frame};
+use super::{
+    KerrDisk, KerrObserver, first_disk_crossing, in_falling_band, observer_velocity, to_zamo_frame,
+};
 use super::{LocalFrame, PlacementError, disk_g, frame::Constants};
+mod inside;
+
 use crate::physics::polarization::{
     Emission, Seen, Stokes, Zamo, angle_at_camera, boost, emit, emitted_intensity, sky_basis,
     walker_penrose,
@@ -44,6 +50,17 @@ pub fn equatorial_photon(
     ]
 }
 
+/// The photon's backward polar sign at the n-th crossing of the equator:
+/// s_theta (-1)^(n + h), h = 1 where the path starts away from it.
+fn polar_sign_at(ang: &Ordinary, n: u32) -> f64 {
+    let h = u32::from(ang.s_theta * ang.f_o <= 0.0);
+    if (n + h) % 2 == 0 {
+        ang.s_theta
+    } else {
+        -ang.s_theta
+    }
+}
+
 /// The Stokes parameters of the pixel along `d` (unit, the observer's
 /// frame, hole-frame axes) of a camera of `observer` at `position` (rs)
 /// with up `up`: zero unless the ray ends on the disk.
@@ -58,6 +75,9 @@ pub fn stokes(
 ) -> Result<Seen, PlacementError> {
     let a = spin;
     let beta = observer_velocity(observer, 2.0 * position, a)?;
+    if observer == KerrObserver::Falling && in_falling_band(2.0 * position, a) {
+        return Ok(inside::stokes_falling(position, d, up, a, disk, em));
+    }
     let (dz, doppler) = to_zamo_frame(d, beta);
     let cc = Constants::of(2.0 * position, dz, a);
     if cc.energy == 0.0 || cc.eta <= 0.0 {
@@ -77,13 +97,7 @@ pub fn stokes(
         return Ok(Seen::default());
     };
     let turn = cc.energy.signum();
-    // The backward polar motion at the n-th crossing: s_theta (-1)^(n + h).
-    let h = u32::from(ang.s_theta * ang.f_o <= 0.0);
-    let s_th = if (n + h) % 2 == 0 {
-        ang.s_theta
-    } else {
-        -ang.s_theta
-    };
+    let s_th = polar_sign_at(&ang, n);
     let ze = Zamo::at(rc, 0.0, a);
     let pe = equatorial_photon(&ze, cc.lambda, cc.eta, rad.backward_r_sign(tc), s_th, turn);
     let e = emit(&ze, pe, em.field);

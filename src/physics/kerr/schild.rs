@@ -178,11 +178,26 @@ fn zamo_photon(f: &LocalFrame, d: DVec3) -> Photon {
 
 /// The photon seen along `d` by the observer falling from rest at
 /// infinity (E = 1, L = 0, Q = 0), at `f`, outside or between the horizons:
-/// its tetrad e_theta = d_theta / sqrt(Sigma), e_phi = d_phi / sqrt(g_phiphi)
-/// and e_r orthogonal to u, e_theta and e_phi with dr(e_r) > 0 (the
-/// falling frame of docs/inside-the-horizon.md); k = u - d. The pixel's components come through the flat
-/// oblate triad, as for every observer.
+/// k = u - d on its frame ([`falling_covector`]). The pixel's components
+/// come through the flat oblate triad, as for every observer.
 pub fn falling_photon(f: &LocalFrame, d: DVec3, a: f64) -> Photon {
+    let k = falling_covector(f, a, 1.0, -d);
+    Photon {
+        energy: -k[0],
+        p_r: k[1],
+        p_th: k[2],
+        p_phi: k[3],
+    }
+}
+
+/// The Boyer-Lindquist covector (t, r, theta, phi) of the vector v0 u +
+/// v_r e_r + v_theta e_theta + v_phi e_phi of the observer falling from
+/// rest at infinity at `f` (v's parts on the flat triad there), outside or
+/// between the horizons: its frame e_theta = d_theta / sqrt(Sigma), e_phi =
+/// d_phi / sqrt(g_phiphi) and e_r orthogonal to u, e_theta and e_phi with
+/// dr(e_r) > 0 (the falling frame of docs/inside-the-horizon.md), built from
+/// the metric's components.
+pub fn falling_covector(f: &LocalFrame, a: f64, v0: f64, v: DVec3) -> [f64; 4] {
     let (r, s2) = (f.r, f.sin_theta * f.sin_theta);
     let (sigma, delta) = (f.sigma, f.delta);
     let big_a = (r * r + a * a).powi(2) - a * a * delta * s2;
@@ -202,20 +217,29 @@ pub fn falling_photon(f: &LocalFrame, d: DVec3, a: f64) -> Photon {
     let (ct, cp) = (u_r, -u_r * g_tp / g_pp);
     let norm = (ct * ct * g_tt + 2.0 * ct * cp * g_tp + cp * cp * g_pp + g_rr).sqrt();
     let e_r = [ct / norm, 1.0 / norm, 0.0, cp / norm];
-    let (dr, dth, dph) = (d.dot(f.e_r), d.dot(f.e_theta), d.dot(f.e_phi));
-    // k^mu = u^mu - d_r e_r - d_theta e_theta - d_phi e_phi.
+    let (vr, vth, vph) = (v.dot(f.e_r), v.dot(f.e_theta), v.dot(f.e_phi));
     let k = [
-        u_t_up - dr * e_r[0],
-        ur_up - dr * e_r[1],
-        -dth / g_hh.sqrt(),
-        u_p_up - dr * e_r[3] - dph / g_pp.sqrt(),
+        v0 * u_t_up + vr * e_r[0],
+        v0 * ur_up + vr * e_r[1],
+        vth / g_hh.sqrt(),
+        v0 * u_p_up + vr * e_r[3] + vph / g_pp.sqrt(),
     ];
-    Photon {
-        energy: -(g_tt * k[0] + g_tp * k[3]),
-        p_r: g_rr * k[1],
-        p_th: g_hh * k[2],
-        p_phi: g_tp * k[0] + g_pp * k[3],
-    }
+    [
+        g_tt * k[0] + g_tp * k[3],
+        g_rr * k[1],
+        g_hh * k[2],
+        g_tp * k[0] + g_pp * k[3],
+    ]
+}
+
+/// A Boyer-Lindquist covector (t, r, theta, phi) at frame `f` as a
+/// Kerr-Schild one (T, X, Y, Z): ingoing T = t + int 2r / Delta, Phi = phi
+/// + int a / Delta move a part of v_t and v_phi onto v_r.
+pub(super) fn schild_covector(f: &LocalFrame, a: f64, v: [f64; 4]) -> [f64; 4] {
+    let vr_ks = v[1] - (v[0] * 2.0 * f.r + v[3] * a) / f.delta;
+    let (_, to_cartesian) = kerr_schild_start(f, a);
+    let c = to_cartesian * DVec3::new(vr_ks, v[2], v[3]);
+    [v[0], c.x, c.y, c.z]
 }
 
 /// The Kerr-Schild point of frame `f` and the map from a covector's

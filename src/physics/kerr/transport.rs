@@ -14,8 +14,13 @@
 
 use glam::DVec3;
 
-use super::schild::{backward, bl_r, kerr_schild_start, metric_parts};
-use super::{KerrDisk, KerrObserver, LocalFrame, PlacementError, observer_velocity, r_horizon};
+use super::schild::{
+    backward, bl_r, falling_covector, kerr_schild_start, metric_parts, schild_covector,
+};
+use super::{
+    KerrDisk, KerrObserver, LocalFrame, PlacementError, in_falling_band, observer_velocity,
+    r_horizon,
+};
 use crate::physics::polarization::{Emission, Seen, Stokes, boost, emitted_intensity, sky_basis};
 
 /// The metric's inner product of two vectors at X.
@@ -114,11 +119,7 @@ fn zamo_covector(f: &LocalFrame, a: f64, v: [f64; 4]) -> [f64; 4] {
     let vt = -f.alpha * v[0] - f.omega * f.varpi * v[3];
     let vr = (f.sigma / f.delta).sqrt() * v[1];
     let (vth, vph) = (f.sigma.sqrt() * v[2], f.varpi * v[3]);
-    // Ingoing: T = t + int 2r / Delta, Phi = phi + int a / Delta.
-    let vr_ks = vr - (vt * 2.0 * f.r + vph * a) / f.delta;
-    let (_, to_cartesian) = kerr_schild_start(f, a);
-    let c = to_cartesian * DVec3::new(vr_ks, vth, vph);
-    [vt, c.x, c.y, c.z]
+    schild_covector(f, a, [vt, vr, vth, vph])
 }
 
 /// The gas's orthonormal frame at the equatorial point X: u, e_(r),
@@ -161,6 +162,9 @@ pub fn stokes_transported(
     em: &Emission,
 ) -> Result<Seen, PlacementError> {
     let beta = observer_velocity(observer, 2.0 * position, spin)?;
+    if observer == KerrObserver::Falling && in_falling_band(2.0 * position, spin) {
+        return Ok(stokes_transported_falling(position, d, up, spin, disk, em));
+    }
     Ok(stokes_transported_moving(
         position, d, up, spin, beta, disk, em,
     ))
@@ -185,13 +189,63 @@ pub fn stokes_transported_moving(
         let (t, s) = boost(beta, v0, v);
         zamo_covector(&f, a, [t, s.dot(f.e_r), s.dot(f.e_theta), s.dot(f.e_phi)])
     };
-    let p = lift(1.0, -d);
-    let (x0, _) = kerr_schild_start(&f, a);
+    transported(
+        &f,
+        a,
+        [lift(1.0, -d), lift(0.0, nn), lift(0.0, ww)],
+        disk,
+        em,
+    )
+}
+
+/// [`stokes_transported`] for the camera falling from rest at infinity,
+/// outside the horizon or between the horizons: `d` in its own frame
+/// (schild.rs, [`falling_covector`]), the metric's components lowered and
+/// taken to Kerr-Schild coordinates, which are regular through r+. Zero
+/// for light from the other universe (P(r+) = E (r+^2 + a^2) - a L <= 0
+/// between the horizons).
+pub fn stokes_transported_falling(
+    position: DVec3,
+    d: DVec3,
+    up: DVec3,
+    spin: f64,
+    disk: KerrDisk,
+    em: &Emission,
+) -> Seen {
+    let a = spin;
+    let f = LocalFrame::at(2.0 * position, a);
+    let (nn, ww) = sky_basis(d, up);
+    let p = falling_covector(&f, a, 1.0, -d);
+    let rp = r_horizon(a);
+    if f.r < rp && -p[0] * (rp * rp + a * a) - a * p[3] <= 0.0 {
+        return Seen::default();
+    }
+    let lift = |v0: f64, v: DVec3| schild_covector(&f, a, falling_covector(&f, a, v0, v));
+    transported(
+        &f,
+        a,
+        [lift(1.0, -d), lift(0.0, nn), lift(0.0, ww)],
+        disk,
+        em,
+    )
+}
+
+/// The photon p and the sky's north n and west w (Kerr-Schild covectors at
+/// frame `f`) carried backwards to the disk's first crossing inside the
+/// annulus: its Stokes parameters there, or zero for the horizon or the sky.
+fn transported(
+    f: &LocalFrame,
+    a: f64,
+    [p, n, w]: [[f64; 4]; 3],
+    disk: KerrDisk,
+    em: &Emission,
+) -> Seen {
+    let (x0, _) = kerr_schild_start(f, a);
     let mut s = State {
         x: x0,
         p: DVec3::new(p[1], p[2], p[3]),
-        n: lift(0.0, nn),
-        w: lift(0.0, ww),
+        n,
+        w,
     };
     let (p_t, horizon) = (p[0], r_horizon(a));
     for _ in 0..400_000 {

@@ -28,7 +28,8 @@ fn transporting_the_photon_is_the_geodesic_flow() {
 /// The closed form (the Walker-Penrose constant) and the step-by-step
 /// parallel transport agree ray by ray: the angle to 1e-6 rad and I to
 /// 1e-6 relative, over cameras far, near and in the ergoregion, several
-/// spins (0 among them) and observers, wherever sin(theta_B) and |k_z| are
+/// spins (0 among them) and observers (falling through the horizon too),
+/// wherever sin(theta_B) and |k_z| are
 /// above 1e-2.
 #[test]
 fn the_walker_penrose_constant_meets_the_transported_vector() {
@@ -40,12 +41,19 @@ fn the_walker_penrose_constant_meets_the_transported_vector() {
         (-0.7, DVec3::new(2.0, -1.0, -6.0), KerrObserver::Falling),
         (0.99, DVec3::new(0.8, 0.1, 0.2), KerrObserver::Zamo),
         (0.5, DVec3::new(-3.0, 0.8, 1.0), KerrObserver::Orbiting),
+        // Falling between the horizons (Boyer-Lindquist r = 0.67 r+ of
+        // a* = 0.9, 0.63 rs of a* = 0) and in the band just outside
+        // (1.015 r+ of a* = 0.7): the falling frame's own photons.
+        (0.9, DVec3::new(0.1, 0.25, -0.55), KerrObserver::Falling),
+        (0.0, DVec3::new(0.3, 0.35, -0.42), KerrObserver::Falling),
+        (0.7, DVec3::new(0.0, 0.3, -0.88), KerrObserver::Falling),
     ] {
         let disk = KerrDisk {
             inner: r_isco(spin) / 2.0,
             outer: 8.0,
         };
         let up = DVec3::new(0.1, 1.0, 0.2).normalize();
+        let before = compared;
         for k in 0..160 {
             let d = sphere_direction(k, 160);
             let want = stokes_transported(at, d, up, spin, obs, disk, &em)
@@ -87,6 +95,11 @@ fn the_walker_penrose_constant_meets_the_transported_vector() {
             );
             compared += 1;
         }
+        assert!(
+            compared - before >= 5,
+            "{spin} {at} {obs:?}: {} rays",
+            compared - before
+        );
     }
     assert!(compared > 100, "{compared}");
 }
