@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Compare two builds of blackhole image by image: every preset at 320x180
 and 640x360 (PNG), and the geodesic AOV (EXR) of each scene with a thin or no
-disk, plus a few spinning-hole and projection cameras. For a reshaping step
+disk, plus a few spinning-hole and projection cameras, and the Stokes AOV of
+some of them. For a reshaping step
 that must not change what is drawn.
 
 A PNG passes when at most 0.1 % of its pixels differ by more than one 8-bit
@@ -26,7 +27,9 @@ import OpenEXR
 from PIL import Image
 
 PRESETS = ["default", "interstellar", "doppler", "grid", "binary", "edge-on",
-           "no-gravity", "top-down", "falling", "gargantua", "kerr-doppler"]
+           "no-gravity", "top-down", "falling", "gargantua", "kerr-doppler", "m87", "fields"]
+# The scenes whose Stokes AOV (--aov stokes) is compared too.
+STOKES = ["default", "m87", "fields", "spin09", "ergo", "retro", "fall05"]
 EXTRA = {
     "spin09": '[[black_hole]]\nspin = 0.9\n',
     "ergo": '[[black_hole]]\nspin = 0.998\n[camera]\nposition = [0.8, 0.1, 0.2]\n'
@@ -114,6 +117,15 @@ def main():
         ok, line = compare_aov(a, b)
         bad += not ok
         print(f"{'ok ' if ok else 'BAD'} aov {name:14s}: {line}")
+        if name in STOKES:
+            a, b = (os.path.join(out, f"{name}_stokes_{t}.exr") for t in ("old", "new"))
+            args[-1] = "stokes"
+            if not (render(old, args + ["--out", a], env) and render(new, args + ["--out", b], env)):
+                bad += 1
+                continue
+            ok, line = compare_aov(a, b)
+            bad += not ok
+            print(f"{'ok ' if ok else 'BAD'} stokes {name:11s}: {line}")
     print(f"{bad} comparisons failed")
     return 1 if bad else 0
 

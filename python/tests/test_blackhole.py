@@ -461,3 +461,29 @@ def test_the_stokes_aov_has_no_nan_for_any_field_or_observer(renderer, spin):
         stokes = renderer.aov(scene, "stokes", 24, 14)
         assert np.isfinite(stokes).all(), (spin, position, field, observer)
     assert renderer.validation_counts() == (0, 0)
+
+
+@pytest.mark.parametrize("spin", [0.0, 0.9, -0.6])
+def test_a_falling_camera_inside_the_horizon_sees_the_polarized_disk(renderer, spin):
+    # Between the horizons (or inside the non-rotating hole's), on the spin
+    # axis, near the disk's plane and looking back in: finite everywhere, the
+    # disk polarized where it is seen, nothing circular.
+    seen = 0
+    for position, look, field in [
+        ("[0.0, 0.5, 0.0]", "[0.3, -1.0, -3.0]", "[0, 0, 1]"),
+        ("[0.5, 0.05, -0.4]", "[2.0, 0.0, -1.6]", "[0.87, 0.5, 0]"),
+        ("[0.2, 0.3, -0.3]", "[0, 0, 0]", "[1, 0, 0]"),
+    ]:
+        scene = blackhole.Scene.from_toml(
+            f"[[black_hole]]\nspin = {spin}\n[camera]\nposition = {position}\n"
+            f'look_at = {look}\nvfov_deg = 110\nobserver = "falling"\n'
+            f"[polarization]\nfield = {field}\n"
+        )
+        stokes = renderer.aov(scene, "stokes", 32, 18)
+        assert np.isfinite(stokes).all(), (spin, position)
+        assert not stokes[..., 3].any()
+        i, p = stokes[..., 0], np.hypot(stokes[..., 1], stokes[..., 2])
+        assert (p <= 0.7 * i * (1 + 1e-5) + 1e-30).all(), (spin, position)
+        seen += int((i > 0).sum())
+    assert seen > 20, seen
+    assert renderer.validation_counts() == (0, 0)
