@@ -377,9 +377,10 @@ impl RaymarchPipelines {
             // (Its 32-bit build misses by 1e-3 rad at 0.8 r+ and by up to a
             // radian near r-: tests/kerr_gpu.rs's cameras.)
             return Err(crate::Error::Other(
-                "a falling camera inside a spinning hole's horizon needs 64-bit floats in \
-                 shaders (shaderFloat64), which this device lacks or BLACKHOLE_NO_F64=1 turns \
-                 off: its light paths are not drawn in 32-bit floats"
+                "a falling camera inside a spinning hole's horizon, or within 5% of it \
+                 outside (the falling frame's band), needs 64-bit floats in shaders \
+                 (shaderFloat64), which this device lacks or BLACKHOLE_NO_F64=1 turns off: its \
+                 light paths are not drawn in 32-bit floats"
                     .into(),
             ));
         }
