@@ -96,36 +96,27 @@ def main():
             f.write(toml)
     scenes = PRESETS + [os.path.join(out, n + ".toml") for n in EXTRA]
     bad = 0
+
+    def pair(args, what, ext, compare, label):
+        """Renders args with both builds to OUT/what_{old,new}.ext and compares."""
+        a, b = (os.path.join(out, f"{what}_{t}.{ext}") for t in ("old", "new"))
+        if not (render(old, args + ["--out", a], env) and render(new, args + ["--out", b], env)):
+            return 1
+        ok, line = compare(a, b)
+        print(f"{'ok ' if ok else 'BAD'} {label}: {line}")
+        return int(not ok)
+
     for scene in scenes:
         name = os.path.basename(scene).removesuffix(".toml")
         for w, h in SIZES:
-            a, b = (os.path.join(out, f"{name}_{w}_{t}.png") for t in ("old", "new"))
             size = ["--scene", scene, "--width", str(w), "--height", str(h)]
-            if not (render(old, size + ["--out", a], env) and render(new, size + ["--out", b], env)):
-                bad += 1
-                continue
-            ok, line = compare_png(a, b)
-            bad += not ok
-            print(f"{'ok ' if ok else 'BAD'} png {name:14s} {w}x{h}: {line}")
+            bad += pair(size, f"{name}_{w}", "png", compare_png, f"png {name:14s} {w}x{h}")
         if name == "interstellar":
             continue  # the AOV describes thin-disk hits; a volumetric disk is refused
-        a, b = (os.path.join(out, f"{name}_aov_{t}.exr") for t in ("old", "new"))
-        args = ["--scene", scene, "--width", "320", "--height", "180", "--aov", "geodesic"]
-        if not (render(old, args + ["--out", a], env) and render(new, args + ["--out", b], env)):
-            bad += 1
-            continue
-        ok, line = compare_aov(a, b)
-        bad += not ok
-        print(f"{'ok ' if ok else 'BAD'} aov {name:14s}: {line}")
+        args = ["--scene", scene, "--width", "320", "--height", "180", "--aov"]
+        bad += pair(args + ["geodesic"], f"{name}_aov", "exr", compare_aov, f"aov {name:14s}")
         if name in STOKES:
-            a, b = (os.path.join(out, f"{name}_stokes_{t}.exr") for t in ("old", "new"))
-            args[-1] = "stokes"
-            if not (render(old, args + ["--out", a], env) and render(new, args + ["--out", b], env)):
-                bad += 1
-                continue
-            ok, line = compare_aov(a, b)
-            bad += not ok
-            print(f"{'ok ' if ok else 'BAD'} stokes {name:11s}: {line}")
+            bad += pair(args + ["stokes"], f"{name}_stokes", "exr", compare_aov, f"stokes {name:11s}")
     print(f"{bad} comparisons failed")
     return 1 if bad else 0
 

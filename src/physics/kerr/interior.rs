@@ -17,7 +17,7 @@ use glam::DVec3;
 use super::angular::{Ordinary, Vortical};
 use super::frame::{LocalFrame, r_horizon};
 use super::radial::{Radial, adaptive_gauss, r_potential};
-use super::schild::falling_photon;
+use super::schild::{Photon, falling_photon};
 use super::{KerrDisk, KerrOutcome, disk_g_of_constants, first_disk_crossing};
 
 /// ln|(r - r+) / (r - r-)| a / (r+ - r-): phi~ - phi.
@@ -50,6 +50,36 @@ impl Polar {
     }
 }
 
+/// The photon of the camera falling from rest at infinity at `f`, seen
+/// along `d` (its frame through the flat triad), and its constants.
+pub(crate) struct FallingRay {
+    pub photon: Photon,
+    pub lambda: f64,
+    pub eta: f64,
+    /// The backward ray's polar sign (against p_theta) and (p_theta / E)^2.
+    pub s_th: f64,
+    pub theta_potential: f64,
+}
+
+/// [`FallingRay`] at `f`, outside or between the horizons; None at E = 0
+/// and, between the horizons, for light from the other universe (P(r+) = E
+/// (r+^2 + a^2) - a L <= 0).
+pub(crate) fn falling_ray(f: &LocalFrame, d: DVec3, a: f64) -> Option<FallingRay> {
+    let ph = falling_photon(f, d, a);
+    let (rp, e, l) = (r_horizon(a), ph.energy, ph.p_phi);
+    if e == 0.0 || (f.r < rp && e * (rp * rp + a * a) - a * l <= 0.0) {
+        return None;
+    }
+    let (c2, s2) = (f.cos_theta * f.cos_theta, f.sin_theta * f.sin_theta);
+    Some(FallingRay {
+        photon: ph,
+        lambda: l / e,
+        eta: (ph.p_th * ph.p_th + c2 * (l * l / s2 - a * a * e * e)) / (e * e),
+        s_th: -1f64.copysign(ph.p_th),
+        theta_potential: (ph.p_th / e).powi(2),
+    })
+}
+
 /// The backward ray of a falling camera at `position` (r_s, hole frame,
 /// between the horizons, where every backward ray moves outward) along the unit direction `d` (its
 /// frame through the flat triad), spin `spin`: the sky, the horizon, the
@@ -62,18 +92,15 @@ pub fn trace_falling_inside(
 ) -> Option<KerrOutcome> {
     let a = spin;
     let f = LocalFrame::at(2.0 * position, a);
-    let ph = falling_photon(&f, d.normalize(), a);
-    let rp = r_horizon(a);
+    let FallingRay {
+        photon: ph,
+        lambda,
+        eta,
+        s_th,
+        theta_potential,
+    } = falling_ray(&f, d.normalize(), a)?;
     let (e, l) = (ph.energy, ph.p_phi);
-    if e * (rp * rp + a * a) - a * l <= 0.0 || e == 0.0 {
-        return None;
-    }
-    let lambda = l / e;
-    let (c2, s2) = (f.cos_theta * f.cos_theta, f.sin_theta * f.sin_theta);
-    let eta = (ph.p_th * ph.p_th + c2 * (l * l / s2 - a * a * e * e)) / (e * e);
     let turn = e.signum();
-    // Backward: outward in r between the horizons; in theta against p_theta.
-    let s_th = -1f64.copysign(ph.p_th);
     let rad = Radial::new(a, lambda, eta, f.r, 1.0);
     let polar = if eta > 0.0 {
         Polar::Ordinary(Ordinary::new(
@@ -81,7 +108,7 @@ pub fn trace_falling_inside(
             lambda,
             eta,
             f.cos_theta,
-            (ph.p_th / e).powi(2),
+            theta_potential,
             s_th,
         ))
     } else {

@@ -17,8 +17,8 @@ use glam::DVec3;
 
 use super::super::angular::Ordinary;
 use super::super::frame::{LocalFrame, r_horizon};
+use super::super::interior::{FallingRay, falling_ray};
 use super::super::radial::Radial;
-use super::super::schild::falling_photon;
 use super::super::{KerrDisk, disk_g_of_constants, first_disk_crossing};
 use super::{equatorial_photon, polar_sign_at};
 use crate::physics::polarization::{
@@ -77,24 +77,29 @@ pub fn stokes_falling(
     em: &Emission,
 ) -> Seen {
     let f = LocalFrame::at(2.0 * position, a);
-    let ph = falling_photon(&f, d, a);
-    let (rp, e, l) = (r_horizon(a), ph.energy, ph.p_phi);
-    let inside = f.r < rp;
-    if e == 0.0 || (inside && e * (rp * rp + a * a) - a * l <= 0.0) {
+    let Some(FallingRay {
+        photon: ph,
+        lambda,
+        eta,
+        s_th,
+        theta_potential,
+    }) = falling_ray(&f, d, a)
+    else {
         return Seen::default();
-    }
-    let lambda = l / e;
-    let (c2, s2) = (f.cos_theta * f.cos_theta, f.sin_theta * f.sin_theta);
-    let eta = (ph.p_th * ph.p_th + c2 * (l * l / s2 - a * a * e * e)) / (e * e);
+    };
     if eta <= 0.0 {
         return Seen::default();
     }
+    let (e, l) = (ph.energy, ph.p_phi);
     // Backward: outward between the horizons; outside against the photon's
-    // dr (p_r = g_rr p^r, g_rr > 0 there); in theta against p_theta.
-    let s_r = if inside || ph.p_r < 0.0 { 1.0 } else { -1.0 };
-    let s_th = -1f64.copysign(ph.p_th);
+    // dr (p_r = g_rr p^r, g_rr > 0 there).
+    let s_r = if f.r < r_horizon(a) || ph.p_r < 0.0 {
+        1.0
+    } else {
+        -1.0
+    };
     let rad = Radial::new(a, lambda, eta, f.r, s_r);
-    let ang = Ordinary::new(a, lambda, eta, f.cos_theta, (ph.p_th / e).powi(2), s_th);
+    let ang = Ordinary::new(a, lambda, eta, f.cos_theta, theta_potential, s_th);
     let Some((n, tc, rc)) = first_disk_crossing(&rad, &ang, Some(disk)) else {
         return Seen::default();
     };
