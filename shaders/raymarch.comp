@@ -70,13 +70,25 @@ layout(std430, binding = RM_DEFERRED_DISPATCH) buffer DeferredDispatch {
 } deferred_dispatch;
 #endif
 
+// The ray's Stokes vector: a thin-disk hit's, or the volumetric disk's sum
+// along the ray (pol_volume, polarization.glsl), zeros elsewhere.
+vec4 ray_stokes(Hit hit) {
+    if (volumetric()) return pol_volume;
+    return hit.outcome == OUT_DISK ? pol_stokes(hit.pol, hit.g) : vec4(0.0);
+}
+
+// Whether the ray has a Stokes vector to draw.
+bool ray_polarized(Hit hit) {
+    return hit.outcome == OUT_DISK || volumetric();
+}
+
 #ifndef GEODESIC_AOV
 // The polarized picture (POL_VIEW): the ray march writes the Stokes
 // parameters I, Q, U of a disk hit (as the Stokes AOV does, in a half-float
 // image: the picture's passes draw them) in place of its light; the sky is
 // dark (storable_signed: Q and U are signed).
 vec4 picture_stokes(Hit hit) {
-    return vec4(storable_signed(pol_stokes(hit.pol, hit.g).xyz), 1.0);
+    return vec4(storable_signed(ray_stokes(hit).xyz), 1.0);
 }
 #endif
 
@@ -115,7 +127,7 @@ void disk_pass() {
         // The polarized picture's Stokes parameters where the disk is hit
         // (the trace pass left zeros).
         hit.g *= observer_g;
-        if (hit.outcome == OUT_DISK) imageStore(out_img, px, picture_stokes(hit));
+        if (ray_polarized(hit)) imageStore(out_img, px, picture_stokes(hit));
         return;
     }
     vec3 behind = hit.trans < 0.003 ? vec3(0.0) : imageLoad(out_img, px).rgb;
@@ -224,8 +236,7 @@ void main() {
     hit.g *= observer_g;
 #ifdef GEODESIC_AOV
     // The Stokes AOV (POL_STOKES): I, Q, U, V of a disk hit, zeros elsewhere.
-    vec4 stokes = hit.outcome == OUT_DISK ? pol_stokes(hit.pol, hit.g) : vec4(0.0);
-    imageStore(out_img, ivec2(px), POLARIZATION == POL_STOKES ? stokes : path_record(hit));
+    imageStore(out_img, ivec2(px), POLARIZATION == POL_STOKES ? ray_stokes(hit) : path_record(hit));
 #else
     float pixel_angle = ray.angle;
     // The pixel's footprint on the sky: the change of the final direction
@@ -264,7 +275,7 @@ void main() {
 #endif
     vec4 value;
     if (POLARIZATION == POL_VIEW) {
-        value = hit.outcome == OUT_DISK ? picture_stokes(hit) : vec4(0.0, 0.0, 0.0, 1.0);
+        value = ray_polarized(hit) ? picture_stokes(hit) : vec4(0.0, 0.0, 0.0, 1.0);
     } else {
         value = vec4(storable(path_color(hit, fp, pixel_angle)), 1.0);
     }

@@ -123,8 +123,8 @@ fn an_observer_inside_any_horizon_is_refused_in_one_wording() {
 
 #[test]
 fn every_polarization_key_is_checked_whether_or_not_the_picture_is_on() {
-    // The picture off (the default), and in scenes it could not draw: the
-    // volumetric disk, two holes, gravity off. A bad value is refused by
+    // The picture off (the default), in a volumetric scene, and in scenes
+    // it cannot draw: two holes, gravity off. A bad value is refused by
     // its key in each (it would be drawn once the picture is turned on,
     // or read by --aov stokes).
     let scenes = [
@@ -174,10 +174,6 @@ fn a_stokes_aov_the_scene_cannot_have_is_refused_before_the_gpu() {
             "one hole",
         ),
         ("[physics]\ngravity = false\n", "gravity on"),
-        (
-            "[disk]\nkind = \"volumetric\"\ninner_radius = 3.0\n",
-            "volumetric",
-        ),
     ] {
         let dir = scratch();
         let out = path_in(&dir, "s.exr");
@@ -188,6 +184,57 @@ fn a_stokes_aov_the_scene_cannot_have_is_refused_before_the_gpu() {
             "{toml}: {e}"
         );
         assert!(!out.exists());
+    }
+}
+
+#[test]
+fn a_volumetric_disk_gets_the_stokes_aov_and_its_numbers_but_not_the_geodesic_one() {
+    // Once refused by name (the thin disk only): each sample of the gas
+    // carries its own polarization, for a non-rotating and a spinning hole.
+    for toml in [
+        "[disk]\nkind = \"volumetric\"\ninner_radius = 3.0\n",
+        "[[black_hole]]\nspin = 0.9\n[disk]\nkind = \"volumetric\"\ninner_radius = 2.0\n",
+    ] {
+        let dir = scratch();
+        let (out, json) = (path_in(&dir, "s.exr"), path_in(&dir, "s.json"));
+        let args = [
+            "--aov",
+            "stokes",
+            "--width",
+            "64",
+            "--height",
+            "36",
+            "--out",
+            out.to_str().expect("utf-8"),
+            "--json",
+            json.to_str().expect("utf-8"),
+        ];
+        let (code, stdout, stderr) = run(render_scene(&dir, toml, &args));
+        assert_clean(code, &stdout, &stderr);
+        assert!(out.exists() && json.exists(), "{toml}: {stdout}{stderr}");
+        assert!(stdout.contains("beta_2"), "{toml}: {stdout}");
+        let aov = image::open(&out).expect("EXR").to_rgba32f();
+        let lit = aov.pixels().filter(|p| p.0[0] > 0.0).count();
+        assert!(lit > 100, "{toml}: {lit} pixels with light");
+        assert!(
+            aov.pixels().all(|p| p.0.iter().all(|v| v.is_finite())
+                && p.0[3] == 0.0
+                && p.0[1].hypot(p.0[2]) <= 0.7001 * p.0[0]),
+            "{toml}: P <= fraction I, V = 0"
+        );
+        let geodesic = path_in(&dir, "g.exr");
+        let args = [
+            "--aov",
+            "geodesic",
+            "--out",
+            geodesic.to_str().expect("utf-8"),
+        ];
+        let e = refused_early(render_scene(&dir, toml, &args));
+        assert!(
+            e.contains("--aov geodesic") && e.contains("volumetric"),
+            "{e}"
+        );
+        assert!(!geodesic.exists());
     }
 }
 

@@ -43,21 +43,26 @@ vec3 pol_dir_observer = vec3(0.0, 0.0, 1.0);
 vec3 pol_origin = vec3(0.0);
 
 // kappa (as a complex vec2) of p and f, ZAMO components at Boyer-Lindquist
-// (r, cos theta = c) of a hole of spin a: the camera's side, in preal.
-pvec2 pol_kappa_camera(preal r, preal c, preal a, pvec4 p, pvec4 f) {
-    preal s = sqrt(max(1.0 - c * c, 0.0));
-    preal rho2 = r * r + a * a, sig = r * r + a * a * c * c, delta = r * r - 2.0 * r + a * a;
-    preal big_a = rho2 * rho2 - a * a * delta * s * s;
-    preal alpha = sqrt(sig * delta / big_a), omega = 2.0 * a * r / big_a;
-    preal s_varpi = sqrt(sig / big_a);  // sin theta / varpi, finite on the axis
-    preal m0r = p.x * f.y - p.y * f.x, mrp = p.y * f.w - p.w * f.y;
-    preal m0t = p.x * f.z - p.z * f.x, mpt = p.w * f.z - p.z * f.w;
-    preal ka = sqrt(delta / sig) * ((1.0 - a * s * s * omega) / alpha * m0r + a * s * s_varpi * mrp);
-    preal kb = (s / sqrt(sig)) * (rho2 * omega - a) / alpha * m0t + rho2 * s_varpi / sqrt(sig) * mpt;
-    // (A - i B)(r - i a c)
-    preal im_r = -a * c;
-    return pvec2(ka * r + kb * im_r, ka * im_r - kb * r);
-}
+// (r, cos theta = c) of a hole of spin a, in the precision T: the camera's
+// side in preal (pol_kappa_camera), a volume sample's in 32 bits
+// (pol_kappa_at).
+#define POL_KAPPA_AT(name, T, T2, T4) \
+    T2 name(T r, T c, T a, T4 p, T4 f) { \
+        T s = sqrt(max(1.0 - c * c, 0.0)); \
+        T rho2 = r * r + a * a, sig = r * r + a * a * c * c, delta = r * r - 2.0 * r + a * a; \
+        T big_a = rho2 * rho2 - a * a * delta * s * s; \
+        T alpha = sqrt(sig * delta / big_a), omega = 2.0 * a * r / big_a; \
+        T s_varpi = sqrt(sig / big_a); /* sin theta / varpi, finite on the axis */ \
+        T m0r = p.x * f.y - p.y * f.x, mrp = p.y * f.w - p.w * f.y; \
+        T m0t = p.x * f.z - p.z * f.x, mpt = p.w * f.z - p.z * f.w; \
+        T ka = sqrt(delta / sig) * ((1.0 - a * s * s * omega) / alpha * m0r + a * s * s_varpi * mrp); \
+        T kb = (s / sqrt(sig)) * (rho2 * omega - a) / alpha * m0t + rho2 * s_varpi / sqrt(sig) * mpt; \
+        /* (A - i B)(r - i a c) */ \
+        T im_r = -a * c; \
+        return T2(ka * r + kb * im_r, ka * im_r - kb * r); \
+    }
+POL_KAPPA_AT(pol_kappa_camera, preal, pvec2, pvec4)
+POL_KAPPA_AT(pol_kappa_at, float, vec2, vec4)
 
 // kappa of p and f given on the falling frame (u, e_r, e_theta, e_phi; the
 // frame of kerr/interior.glsl's falling camera) at Boyer-Lindquist (r, c)
@@ -229,6 +234,98 @@ uvec2 pol_tile(uvec2 px) {
     P.camera.aspect = float(P.camera.size.x) / float(P.camera.size.y);
     P.polarization.field = P.polarization.fields[t].xyz;
     return uvec2(px.x - x0, px.y);
+}
+
+// The volumetric disk (volume.glsl): each sample emits as the thin disk
+// does, from its own place, and its electric vector is carried to the
+// camera by its own Walker-Penrose constant; the ray's Stokes vector is the
+// sum over the samples (pol_volume). The camera's side, kappa(p, n) and
+// kappa(p, w) (.xy, .zw), is the metric's, once a ray (pol_cam_k), and so
+// is its own measure of the photon's energy at infinity (pol_cam_g: a
+// sample's g = pol_cam_g / its gas energy per unit E).
+vec4 pol_cam_k = vec4(1.0, 0.0, 0.0, 1.0);
+float pol_cam_g = 1.0;
+vec4 pol_volume = vec4(0.0);
+
+// The electric vector emitted along k (the gas's frame, unit): f = k x B /
+// |k x B|, and sin(theta_B) = |k x B|; 0 where the angle is undefined.
+vec3 pol_across(vec3 k, out float sin_b) {
+    vec3 kb = cross(k, P.polarization.field);
+    sin_b = length(kb);
+    return sin_b > 1e-7 ? kb / sin_b : vec3(0.0);
+}
+
+// A volume sample's emissivity per unit length and density in the gas's
+// frame, (r / rs)^-n sin(theta_B)^(1 + alpha) (0 where undefined: P = 0).
+float pol_volume_j(float r_rs, float sin_b) {
+    return sin_b > 1e-7 ? pow(r_rs, -P.polarization.emissivity_index) * pow(sin_b, 1.0 + P.polarization.spectral_index)
+                        : 0.0;
+}
+
+// A spinning hole's volume sample at Boyer-Lindquist (r, cos theta = c)
+// (M): the photon of constants (lam, eta) there with backward signs s_r,
+// s_th (ZAMO components: p^(r) = -s_r sqrt(R / (Sigma Delta)), p^(theta) =
+// -s_th sqrt(Theta / Sigma)), the gas on a circular orbit at the
+// Keplerian angular velocity of the equatorial radius x at its distance
+// from the axis (as metric_gas_g: (r^2 + a^2) sin^2 - a^2 = x^2, no nearer
+// than the disk's inner edge), the ZAMO's frame boosted along e_phi; the
+// field on its e_r, e_phi and -e_theta (the disk's radial, toroidal and
+// vertical at the equator). Returns kappa (.xy), pol_volume_j (.z) and
+// 1 / the gas's energy per unit E (.w).
+vec4 pol_volume_kerr(float r, float c, float a, float lam, float eta, float s_r, float s_th, float turn) {
+    float s2 = max(1.0 - c * c, 1e-12);
+    float rho2 = r * r + a * a, sig = r * r + a * a * c * c, delta = r * r - 2.0 * r + a * a;
+    float big_a = rho2 * rho2 - a * a * delta * s2;
+    float alpha = sqrt(sig * delta / big_a), omega = 2.0 * a * r / big_a, varpi = sqrt(big_a / sig * s2);
+    float xx = rho2 - a * lam, yy = lam - a;
+    float big_r = max(xx * xx - delta * (eta + yy * yy), 0.0);
+    float big_th = max(eta + (a * a - lam * lam / s2) * c * c, 0.0);
+    vec4 p = vec4(turn * (1.0 - omega * lam) / alpha, -s_r * sqrt(big_r / (sig * delta)), -s_th * sqrt(big_th / sig),
+                  turn * lam / varpi);
+    float x = max(sqrt(max(r * r * s2 - a * a * c * c, 0.0)), 2.0 * P.disk.inner / P.metric.holes[0].w);
+    float beta = clamp(varpi * (1.0 / (x * sqrt(x) + a) - omega) / alpha, -0.999999, 0.999999);
+    float gam = inversesqrt(1.0 - beta * beta);
+    float pt = gam * (p.x - beta * p.w);
+    float sin_b;
+    vec3 fe = pol_across(vec3(p.y, gam * (p.w - beta * p.x), -p.z) / pt, sin_b);
+    vec4 f = vec4(gam * beta * fe.y, fe.x, -fe.z, gam * fe.y);
+    return vec4(pol_kappa_at(r, c, a, p, f), pol_volume_j(0.5 * r, sin_b), 1.0 / pt);
+}
+
+// The non-rotating hole's volume sample r rs from the hole along r_hat,
+// the photon along k_hat (static frame), coordinate-free as
+// pol_emit_static: the gas moves along e_phi = v x r_hat (v: -e_theta, the
+// unit vector across r_hat towards the disk's normal) at the Keplerian
+// angular velocity of its distance from the axis (no nearer than the inner
+// edge). Returns as pol_volume_kerr.
+vec4 pol_volume_static(float r, vec3 r_hat, vec3 k_hat) {
+    vec3 n = P.disk.normal;
+    vec3 v = n - dot(n, r_hat) * r_hat;
+    float sin_t = length(v);
+    v = sin_t > 1e-6 ? v / sin_t : n;
+    vec3 e_phi = cross(v, r_hat);
+    float x = max(r * sin_t, P.disk.inner / P.metric.holes[0].w);
+    float lapse = sqrt(max(1.0 - 1.0 / r, 1e-6));
+    // varpi Omega / alpha in M: (2 r sin) (2 x)^-3/2 / lapse.
+    float beta = min(2.0 * r * sin_t * pow(2.0 * x, -1.5) / lapse, 0.999999);
+    float gam = inversesqrt(1.0 - beta * beta);
+    float kp = dot(k_hat, e_phi);
+    float pt = gam * (1.0 - beta * kp);
+    float sin_b;
+    vec3 fe = pol_across(vec3(dot(k_hat, r_hat), gam * (kp - beta), dot(k_hat, v)) / pt, sin_b);
+    vec4 f = vec4(gam * beta * fe.y, fe.x * r_hat + gam * fe.y * e_phi + fe.z * v);
+    return vec4(pol_kappa_static(r, r_hat, vec4(1.0, k_hat), f), pol_volume_j(r, sin_b), lapse / pt);
+}
+
+// What a sample of pol_volume_kerr or pol_volume_static adds to the ray's
+// Stokes vector, per unit of its weight (transmission x density x length):
+// I = g^(2 + alpha) j (the length is the camera's, hence one power of g
+// less than the thin disk's), P = fraction I at the angle its constant
+// gives at the camera.
+vec4 pol_volume_seen(vec4 em) {
+    float i = pow(max(pol_cam_g * em.w, 0.0), 2.0 + P.polarization.spectral_index) * em.z;
+    vec2 angle = pol_angle(em.xy, pol_cam_k.xy, pol_cam_k.zw);
+    return vec4(i, (P.polarization.fraction * i) * angle, 0.0);
 }
 
 #endif

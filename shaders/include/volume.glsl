@@ -13,6 +13,7 @@
 #include "variant.glsl"
 #include "ray_state.glsl"
 #include "disk.glsl"
+#include "polarization.glsl"
 
 // The volumetric disk's noise volume, three octaves in r, g, b
 // (src/render/noise.rs, `volume_noise`).
@@ -90,14 +91,19 @@ vec3 volume_emission(float r, float lambda) {
     return disk_color(max(r, 1.0001 * P.disk.inner), metric_gas_g(r, lambda));
 }
 
-// The light gathered at one sample p, standing for a length ds of the path.
-void volume_sample(vec3 p, float ds, float lambda, inout vec3 acc, inout float trans) {
-    float r;
-    float dens = volume_density(p, r);
+// The light gathered at a sample of density dens at radius r, standing for
+// a length ds of the path.
+void volume_light(float r, float dens, float ds, float lambda, inout vec3 acc, inout float trans) {
     vec3 emit = volume_emission(r, lambda);
     acc += trans * emit * (dens * P.volume.lit * ds);
     trans *= exp(-dens * 0.8 * ds);
 }
+
+// A closed-form path's polarized sample at p, a fraction frac along its
+// chord (0 to 3) from p0 to p1 (volume_chords): the emission there,
+// pol_volume_kerr's or pol_volume_static's (polarization.glsl), from the
+// photon the metric knows at that point of its path.
+vec4 metric_pol_sample(vec3 p, vec3 p0, vec3 p1, int chord, float frac);
 
 // The samples a closed-form path gives the slab around one of its crossings
 // of the disk plane: four chords between five points of the exact path
@@ -122,7 +128,17 @@ void volume_chords(vec3 pts[5], float lambda, inout vec3 acc, inout float trans)
         float l = past.z ? len.w : past.y ? len.z : past.x ? len.y : len.x;
         vec3 p0 = past.z ? pts[3] : past.y ? pts[2] : past.x ? pts[1] : pts[0];
         vec3 p1 = past.z ? pts[4] : past.y ? pts[3] : past.x ? pts[2] : pts[1];
-        volume_sample(mix(p0, p1, clamp((t - start) / max(l, 1e-9), 0.0, 1.0)), ds, lambda, acc, trans);
+        float frac = clamp((t - start) / max(l, 1e-9), 0.0, 1.0);
+        vec3 q = mix(p0, p1, frac);
+        float r;
+        float dens = volume_density(q, r);
+        // Polarized (the picture, the Stokes AOV): each sample's Stokes
+        // vector as the camera sees it, weighted as its light.
+        if (POLARIZATION != POL_OFF && dens > 0.0) {
+            int chord = past.z ? 3 : past.y ? 2 : past.x ? 1 : 0;
+            pol_volume += (trans * dens * ds) * pol_volume_seen(metric_pol_sample(q, p0, p1, chord, frac));
+        }
+        volume_light(r, dens, ds, lambda, acc, trans);
     }
 }
 

@@ -452,7 +452,7 @@ fn check_image_request(
             "--exr-post applies to the image (--aov beauty) written as .exr".into(),
         ));
     }
-    if aov != Aov::Beauty && scene.disk.kind == crate::scene::DiskKind::Volumetric {
+    if aov == Aov::Geodesic && scene.disk.kind == crate::scene::DiskKind::Volumetric {
         return Err(Error::Usage(format!(
             "--aov {} needs a thin disk (or none); this scene's disk is volumetric",
             aov.name()

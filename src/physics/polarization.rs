@@ -175,7 +175,12 @@ pub fn walker_penrose_coordinates(z: &Zamo, p: [f64; 4], f: [f64; 4]) -> Complex
 /// The Keplerian gas's speed on the ZAMO's e_phi at equatorial r, and its
 /// Lorentz factor.
 pub fn gas_speed(z: &Zamo) -> (f64, f64) {
-    let om = 1.0 / (z.r.powf(1.5) + z.a);
+    gas_speed_at(z, 1.0 / (z.r.powf(1.5) + z.a))
+}
+
+/// The speed on the ZAMO's e_phi of gas circling at angular velocity `om`
+/// at `z`, and its Lorentz factor.
+pub fn gas_speed_at(z: &Zamo, om: f64) -> (f64, f64) {
     let beta = z.varpi * (om - z.omega) / z.alpha;
     (beta, 1.0 / (1.0 - beta * beta).sqrt())
 }
@@ -197,7 +202,13 @@ pub struct Emitted {
 /// components, future-pointing): the gas's frame is the ZAMO's boosted
 /// along e_phi, its vertical e_(z) = -e_theta.
 pub fn emit(z: &Zamo, p: [f64; 4], field: DVec3) -> Emitted {
-    let (beta, gamma) = gas_speed(z);
+    emit_at(p, field, gas_speed(z))
+}
+
+/// [`emit`] by gas moving on the ZAMO's e_phi at (beta, gamma) of
+/// [`gas_speed_at`], anywhere (the volumetric disk's): the gas's vertical
+/// is -e_theta.
+pub fn emit_at(p: [f64; 4], field: DVec3, (beta, gamma): (f64, f64)) -> Emitted {
     let pt = gamma * (p[0] - beta * p[3]);
     let k = DVec3::new(p[1], gamma * (p[3] - beta * p[0]), -p[2]) / pt;
     let kb = k.cross(field);

@@ -35,15 +35,10 @@ impl Renderer {
     ) -> Result<Frame> {
         self.check_size(width, height)?;
         scene.check_image_size(width, height)?;
-        if kind.is_aov() && scene.disk.kind == DiskKind::Volumetric {
-            let aov = if kind == OutputKind::Stokes {
-                "stokes"
-            } else {
-                "geodesic"
-            };
-            return Err(Error::Usage(format!(
-                "--aov {aov} describes thin-disk hits; this scene's disk is volumetric"
-            )));
+        if kind.is_aov() && kind != OutputKind::Stokes && scene.disk.kind == DiskKind::Volumetric {
+            return Err(Error::Usage(
+                "--aov geodesic describes thin-disk hits; this scene's disk is volumetric".into(),
+            ));
         }
         if scene.polarization.enabled && matches!(kind, OutputKind::Hdr | OutputKind::HdrPost) {
             return Err(Error::Usage(

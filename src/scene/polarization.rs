@@ -8,7 +8,7 @@ use serde::Deserialize;
 use super::locate::Seg::Key;
 use super::rule::{Check, fail, vec3};
 use super::validate::{InRange, direction, rule};
-use super::{Camera, DiskKind, Scene};
+use super::{Camera, Scene};
 
 /// The most field models drawn side by side (`fields`).
 pub const MAX_FIELDS: usize = 4;
@@ -242,12 +242,6 @@ impl Scene {
         let key = |k| [Key("polarization"), Key(k)];
         direction(&key("field"), &p.field)?;
         if p.enabled {
-            rule(
-                self.disk.kind != DiskKind::Volumetric,
-                &key("enabled"),
-                true,
-                "the polarized picture is of the thin disk; this scene's disk is volumetric (docs/polarization.md)",
-            )?;
             if let Some(why) = self.spacetime().polarization_refusal() {
                 return fail(
                     &key("enabled"),

@@ -75,6 +75,22 @@ vec3 kerr_world(float r, float ct, float dphi, float a, float cp, float sp, floa
 // (640x360, the interstellar view) than the non-rotating path draws it.
 const int VOLUME_CROSSINGS = 4;
 
+// The polarized volume (POLARIZATION): the window's five points' (r, cos
+// theta, s_r, s_th), the backward signs at each from its Mino time, and
+// the ray's (a, lambda, eta, turn).
+vec4 kerr_pol_pts[5];
+vec4 kerr_pol_ray;
+
+// A sample between two of them: r and cos theta along the chord (as the
+// sample's place), the signs of the nearer point (they turn only where
+// their motion does, and there its momentum's part is 0).
+vec4 metric_pol_sample(vec3 p, vec3 p0, vec3 p1, int chord, float frac) {
+    vec4 q0 = kerr_pol_pts[chord], q1 = kerr_pol_pts[chord + 1];
+    vec2 rc = mix(q0.xy, q1.xy, frac);
+    vec2 sg = frac < 0.5 ? q0.zw : q1.zw;
+    return pol_volume_kerr(rc.x, rc.y, kerr_pol_ray.x, kerr_pol_ray.y, kerr_pol_ray.z, sg.x, sg.y, kerr_pol_ray.w);
+}
+
 // lambda G_phi at Mino time tau for the ordinary polar motion (as
 // kerr_end), from the camera's part and the complete integral that
 // kerr_phi_start computed once for the path.
@@ -134,6 +150,7 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
     float half_gap = ang.kk / ang.w;
     float rate_y = sqrt(eta);
     int n0 = in_slab ? -1 : 0;
+    kerr_pol_ray = vec4(a, lam, eta, turn);
     // The polar part's constants (ordinary motion: eta > 0).
     // Where the radial part of the azimuth (from the camera's) is known.
     float t_known = 0.0, phr_known = 0.0;
@@ -191,6 +208,11 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
         [[dont_unroll]] do {
             rk[k] = kerr_r_scd(rad, er);
             ck[k] = sq_up * et.y;
+            if (POLARIZATION != POL_OFF) {
+                // The backward polar sign: that of d theta / d tau, of sn.
+                float tk = ta + float(k) * h;
+                kerr_pol_pts[k] = vec4(rk[k], ck[k], kerr_radial_sign(rad, tk), et.x * ang.w >= 0.0 ? 1.0 : -1.0);
+            }
             q[k] = kerr_volume_rate(rad, a, lam, eta, turn, rk[k], ta + float(k) * h);
             rate[k] = q[k] + kerr_phi_rate_th(lam, ck[k]);
             er = kerr_scd_add(er, dr, rad.m);
@@ -227,6 +249,7 @@ void kerr_volume(KerrRadial rad, KerrAngular ang, float a, float lam, float eta,
             float dphi = KERR_INSIDE ? turn * ph[k] + shift_o - kerr_ingoing_shift(kreal(rb), kreal(a))
                                      : turn * ph[k];
             pts[k] = kerr_world(rw, ck[k], dphi, a, cp, sp, to_m);
+            if (POLARIZATION != POL_OFF) kerr_pol_pts[k].x = rw;
         } while (++k < 5);
         volume_chords(pts, lam, hit.glow, hit.trans);
         if (hit.trans < 0.003 || last) return;

@@ -155,23 +155,13 @@ float kerr_disk_light(inout Hit hit, int stop, float rc, float to_m, vec3 pos, f
     return alpha;
 }
 
-// The polarization of the n-th crossing (polarization.glsl; Hit.pol): the
-// photon there from its constants, the backward radial sign from the
-// crossing's radial point e (cases 1 and 2: r grows with sn^2, so the sign
-// of sn cn; cases 3 and 4: s_r throughout) and the polar one alternating
-// from the camera's (s_th (-1)^(n + h)); at the camera the photon along the
-// ZAMO's d and the sky's north and west across the observer's own
-// direction, boosted into the ZAMO's frame. A falling camera between the
-// horizons or in their band (KERR_INSIDE) has them on its own frame, the
-// metric's falling frame (kerr/interior.glsl), unboosted.
-vec4 kerr_polarization(KerrCamera cam, KerrRadial rad, KerrAngular ang, KerrPoint e, int n, float rc,
-                       vec3 d) {
-    float s_r = rad.kcase <= 2 ? e.sgn * (e.fold ? -1.0 : 1.0) : rad.s_r;
-    int h = ang.s_th * ang.f_o > 0.0 ? 0 : 1;
-    float s_th = ((n + h) & 1) == 0 ? ang.s_th : -ang.s_th;
-    float af = float(cam.a);
-    vec4 pe = pol_equatorial_photon(rc, af, float(cam.lam), float(cam.eta), s_r, s_th, cam.turn);
-    vec4 em = pol_emit(rc, af, pe);
+// The camera's side of the polarization: kappa(p, n) and kappa(p, w)
+// (.xy, .zw) of the photon along the pixel's ZAMO direction d and the sky's
+// north and west across the observer's own direction, boosted into the
+// ZAMO's frame. A falling camera between the horizons or in their band
+// (KERR_INSIDE) has them on its own frame, the metric's falling frame
+// (kerr/interior.glsl), unboosted.
+vec4 kerr_pol_camera(KerrCamera cam, vec3 d) {
     kvec3 er, et, ep;
     kerr_triad(cam, er, et, ep);
     kvec3 dz = normalize(kerr_hole_frame(kerr_pixel_dir(d)));
@@ -194,15 +184,29 @@ vec4 kerr_polarization(KerrCamera cam, KerrRadial rad, KerrAngular ang, KerrPoin
     // kappa(p, e_t) ~ r: at 2e4 rs an error of 4e-4 rad, which this takes.
     n4.x = dot(n4.yzw, p.yzw) / p.x;
     w4.x = dot(w4.yzw, p.yzw) / p.x;
-    vec2 kn, kw;
     if (KERR_INSIDE) {
-        kn = vec2(pol_kappa_falling(cam.r, cam.c, cam.a, p, n4));
-        kw = vec2(pol_kappa_falling(cam.r, cam.c, cam.a, p, w4));
-    } else {
-        kn = vec2(pol_kappa_camera(cam.r, cam.c, cam.a, p, n4));
-        kw = vec2(pol_kappa_camera(cam.r, cam.c, cam.a, p, w4));
+        return vec4(vec2(pol_kappa_falling(cam.r, cam.c, cam.a, p, n4)),
+                    vec2(pol_kappa_falling(cam.r, cam.c, cam.a, p, w4)));
     }
-    return pol_of(em, pol_angle(em.xy, kn, kw));
+    return vec4(vec2(pol_kappa_camera(cam.r, cam.c, cam.a, p, n4)), vec2(pol_kappa_camera(cam.r, cam.c, cam.a, p, w4)));
+}
+
+// The polarization of the n-th crossing (polarization.glsl; Hit.pol): the
+// photon there from its constants, the backward radial sign from the
+// crossing's radial point e (cases 1 and 2: r grows with sn^2, so the sign
+// of sn cn; cases 3 and 4: s_r throughout) and the polar one alternating
+// from the camera's (s_th (-1)^(n + h)); the camera's side from
+// kerr_pol_camera.
+vec4 kerr_polarization(KerrCamera cam, KerrRadial rad, KerrAngular ang, KerrPoint e, int n, float rc,
+                       vec3 d) {
+    float s_r = rad.kcase <= 2 ? e.sgn * (e.fold ? -1.0 : 1.0) : rad.s_r;
+    int h = ang.s_th * ang.f_o > 0.0 ? 0 : 1;
+    float s_th = ((n + h) & 1) == 0 ? ang.s_th : -ang.s_th;
+    float af = float(cam.a);
+    vec4 pe = pol_equatorial_photon(rc, af, float(cam.lam), float(cam.eta), s_r, s_th, cam.turn);
+    vec4 em = pol_emit(rc, af, pe);
+    vec4 k = kerr_pol_camera(cam, d);
+    return pol_of(em, pol_angle(em.xy, k.xy, k.zw));
 }
 
 Hit metric_trace(vec3 x, vec3 d) {
@@ -239,6 +243,10 @@ Hit metric_trace(vec3 x, vec3 d) {
     kerr_zamo_g = float(cam.inv_e);
     observer_lapse = float(cam.alpha);
     if (volumetric() && eta > 0.0 && rad.kcase != 4) {
+        if (POLARIZATION != POL_OFF) {
+            pol_cam_k = kerr_pol_camera(cam, d);
+            pol_cam_g = kerr_zamo_g * observer_g;
+        }
         bool in_slab = abs(dot(rel, nrm)) < 1.5 * P.volume.half_height;
         float shift_o = KERR_INSIDE ? kerr_ingoing_shift(cam.r, cam.a) : 0.0;
         kerr_volume(rad, ang, af, lamf, float(eta), float(cam.cp), float(cam.sp), to_m, in_slab, cam.turn,

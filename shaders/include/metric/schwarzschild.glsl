@@ -95,6 +95,18 @@ float light_travel_time(LightPath path, float phi, float b, float rs) {
 // disk plane), at angle phi0 + j pi: its direction from the hole is
 // (-1)^j `node`, and its azimuth az0 + j pi, so no sine, cosine or
 // arctangent is needed per crossing.
+// The camera's side of the polarization (pol_camera_static) at its own
+// place. A falling camera (RAIN_FORM) has them on its own frame, outside,
+// at and inside the horizon: the constant's form is the static frame's in
+// any frame boosted from it along r_hat (p^0 f_r - p_r f^0 is invariant
+// under that boost, p x f . r_hat does not change), and the rain frame is
+// one, continued through the horizon.
+vec4 schwarzschild_pol_camera(vec3 c, float rs) {
+    vec3 rel = pol_origin - c;
+    vec3 beta = !RAIN_FORM && OBSERVER_MOVES ? P.observer.velocity : vec3(0.0);
+    return pol_camera_static(length(rel) / rs, normalize(rel), beta);
+}
+
 // The polarization of a crossing at pos, r rs from the hole, angle phi
 // along the backward path in its plane (normal nrm) of constant cb = (rs /
 // b)^2 (polarization.glsl; Hit.pol): the photon's static-frame direction
@@ -109,15 +121,28 @@ vec4 schwarzschild_polarization(LightPath path, float phi, float u, float cb, ve
     // along phi_hat = nrm x r_hat; the photon runs the other way.
     vec3 k_hat = -normalize((-du / (u * sqrt(max(1.0 - u, 1e-12)))) * r_hat + cross(nrm, r_hat));
     vec4 em = pol_emit_static(1.0 / u, r_hat, P.disk.normal, k_hat);
-    vec3 rel = pol_origin - c;
-    // A falling camera (RAIN_FORM) has them on its own frame, outside, at
-    // and inside the horizon: the constant's form is the static frame's in
-    // any frame boosted from it along r_hat (p^0 f_r - p_r f^0 is
-    // invariant under that boost, p x f . r_hat does not change), and the
-    // rain frame is one, continued through the horizon.
-    vec3 beta = !RAIN_FORM && OBSERVER_MOVES ? P.observer.velocity : vec3(0.0);
-    vec4 k = pol_camera_static(length(rel) / rs, normalize(rel), beta);
+    vec4 k = schwarzschild_pol_camera(c, rs);
     return pol_of(em, pol_angle(em.xy, k.xy, k.zw));
+}
+
+// The polarized volume (POLARIZATION): the ray's orbit plane (normal) and
+// constant cb = (rs / b)^2, for its samples.
+vec4 sch_pol_path;
+
+// A sample at p on the chord from p0 to p1 of the path (volume_chords):
+// the photon's static-frame direction there from the orbit equation at its
+// radius (u' = +-sqrt(cb - u^2 (1 - u)), its sign where the chord's radius
+// falls along the backward path), as schwarzschild_polarization.
+vec4 metric_pol_sample(vec3 p, vec3 p0, vec3 p1, int chord, float frac) {
+    vec3 c = P.metric.holes[0].xyz;
+    float rs = P.metric.holes[0].w;
+    vec3 rel = p - c;
+    float r = length(rel) / rs, u = 1.0 / r;
+    vec3 r_hat = rel * (u / rs), nrm = sch_pol_path.xyz;
+    float du = sqrt(max(sch_pol_path.w - u * u * (1.0 - u), 0.0));
+    du *= length(p1 - c) <= length(p0 - c) ? 1.0 : -1.0;
+    vec3 k_hat = -normalize((-du / (u * sqrt(max(1.0 - u, 1e-12)))) * r_hat + cross(nrm, r_hat));
+    return pol_volume_static(r, r_hat, k_hat);
 }
 
 bool thin_crossing(LightPath path, inout float next, float phi0, vec3 c, vec3 node, float az0,
@@ -291,6 +316,11 @@ Hit metric_trace(vec3 x, vec3 d) {
                 }
             }
         } else if (volumetric()) {
+            if (POLARIZATION != POL_OFF) {
+                pol_cam_k = schwarzschild_pol_camera(c, rs);
+                pol_cam_g = observer_g;
+                sch_pol_path = vec4(nrm, cb);
+            }
             if (volume_slabs(path, x, phi0, tilt, c, e1, e2, rs, lambda, hit)) return hit;
         }
     }

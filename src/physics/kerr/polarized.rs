@@ -17,6 +17,7 @@ use super::{
 };
 use super::{LocalFrame, PlacementError, disk_g, frame::Constants};
 mod inside;
+pub mod volume;
 
 use crate::physics::polarization::{
     Emission, Seen, Stokes, Zamo, angle_at_camera, boost, emit, emitted_intensity, sky_basis,

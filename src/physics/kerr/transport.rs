@@ -122,11 +122,14 @@ fn zamo_covector(f: &LocalFrame, a: f64, v: [f64; 4]) -> [f64; 4] {
     schild_covector(f, a, [vt, vr, vth, vph])
 }
 
-/// The gas's orthonormal frame at the equatorial point X: u, e_(r),
-/// e_(phi), e_(z), Kerr-Schild vectors.
-fn gas_frame(x: DVec3, a: f64) -> [[f64; 4]; 4] {
+/// The gas's orthonormal frame at the point X, circling at angular
+/// velocity `om`: u, e_(r), e_(phi), e_(z), Kerr-Schild vectors; e_(z) is
+/// -d_theta (at fixed T, r and the Kerr-Schild azimuth: (-X c / s, -Y c /
+/// s, r s), c = Z / r), +Z on the equator.
+fn gas_frame(x: DVec3, a: f64, om: f64) -> [[f64; 4]; 4] {
     let r = bl_r(x, a);
-    let om = 1.0 / (r.powf(1.5) + a);
+    let c = x.z / r;
+    let s = (1.0 - c * c).max(0.0).sqrt();
     let dphi = [0.0, -x.y, x.x, 0.0];
     let scale = |v: [f64; 4], s: f64| v.map(|c| c * s);
     let sub =
@@ -135,7 +138,7 @@ fn gas_frame(x: DVec3, a: f64) -> [[f64; 4]; 4] {
     let u = unit([1.0, -om * x.y, om * x.x, 0.0]);
     // Spacelike v minus its part along u: v + (v . u) u.
     let e_phi = unit(sub(dphi, u, -dot(x, a, dphi, u)));
-    let e_z = unit([0.0, 0.0, 0.0, 1.0]);
+    let e_z = unit([0.0, -x.x * c / s, -x.y * c / s, r * s]);
     let mut e_r = [0.0, x.x, x.y, 0.0];
     e_r = sub(e_r, u, -dot(x, a, e_r, u));
     e_r = sub(e_r, e_phi, dot(x, a, e_r, e_phi));
@@ -233,13 +236,23 @@ pub fn stokes_transported_falling(
 /// The photon p and the sky's north n and west w (Kerr-Schild covectors at
 /// frame `f`) carried backwards to the disk's first crossing inside the
 /// annulus: its Stokes parameters there, or zero for the horizon or the sky.
-fn transported(
+fn transported(f: &LocalFrame, a: f64, pnw: [[f64; 4]; 3], disk: KerrDisk, em: &Emission) -> Seen {
+    match carried(f, a, pnw, disk, 0.0) {
+        Some((c, p_t, rc)) => emitted_at(c, p_t, a, rc, em),
+        None => Seen::default(),
+    }
+}
+
+/// The state carried backwards from frame `f` to the path's first crossing
+/// of the plane Z = `height` (M) with Boyer-Lindquist r inside the annulus,
+/// with p_T and that r; none for the horizon or the sky.
+fn carried(
     f: &LocalFrame,
     a: f64,
     [p, n, w]: [[f64; 4]; 3],
     disk: KerrDisk,
-    em: &Emission,
-) -> Seen {
+    height: f64,
+) -> Option<(State, f64, f64)> {
     let (x0, _) = kerr_schild_start(f, a);
     let mut s = State {
         x: x0,
@@ -248,19 +261,20 @@ fn transported(
         w,
     };
     let (p_t, horizon) = (p[0], r_horizon(a));
+    let above = |s: &State| s.x.z - height > 0.0;
     for _ in 0..400_000 {
         let r = bl_r(s.x, a);
         let (vx, _) = backward(s.x, s.p, p_t, a);
         if r > 1e6 || (r > horizon && r < horizon * 1.01 && vx.dot(s.x) < 0.0) {
-            return Seen::default();
+            return None;
         }
         let h = 2e-3 * r.min((r - horizon).max(1e-3) * 50.0) / vx.length().max(1e-300);
         let next = s.rk4(p_t, a, h);
-        if s.x.z != 0.0 && (s.x.z > 0.0) != (next.x.z > 0.0) {
+        if s.x.z != height && above(&s) != above(&next) {
             let (mut lo, mut hi) = (0.0, h);
             for _ in 0..60 {
                 let mid = 0.5 * (lo + hi);
-                if (s.rk4(p_t, a, mid).x.z > 0.0) == (s.x.z > 0.0) {
+                if above(&s.rk4(p_t, a, mid)) == above(&s) {
                     lo = mid;
                 } else {
                     hi = mid;
@@ -269,17 +283,17 @@ fn transported(
             let c = s.rk4(p_t, a, 0.5 * (lo + hi));
             let rc = bl_r(c.x, a);
             if (2.0 * disk.inner..=2.0 * disk.outer).contains(&rc) {
-                return emitted_at(c, p_t, a, rc, em);
+                return Some((c, p_t, rc));
             }
         }
         s = next;
     }
-    Seen::default()
+    None
 }
 
 /// The Stokes parameters of the state at the disk's crossing.
 fn emitted_at(c: State, p_t: f64, a: f64, rc: f64, em: &Emission) -> Seen {
-    let [u, e_r, e_phi, e_z] = gas_frame(c.x, a);
+    let [u, e_r, e_phi, e_z] = gas_frame(c.x, a, 1.0 / (rc.powf(1.5) + a));
     let p = [p_t, c.p.x, c.p.y, c.p.z];
     // p^(t) = -p.u, the rest p.e (the camera's observer measures 1).
     let energy = -pair(p, u);
@@ -299,6 +313,9 @@ fn emitted_at(c: State, p_t: f64, a: f64, rc: f64, em: &Emission) -> Seen {
         k_z: k.z,
     }
 }
+
+mod volume;
+pub use volume::{VolumeSeen, volume_sample_transported};
 
 #[cfg(test)]
 mod tests;
