@@ -68,7 +68,7 @@ fn lacks(need: Need, features: &blackhole::features::Features) -> Option<String>
 fn main() -> ExitCode {
     let args = Arguments::from_args();
     let features = common::renderer().features();
-    let tests: [(&str, Need, fn()); 8] = [
+    let tests: [(&str, Need, fn()); 9] = [
         (
             "presets_match_their_golden_images",
             Need::BlessedDevice,
@@ -93,6 +93,11 @@ fn main() -> ExitCode {
             "gpu_stokes_of_a_thin_volumetric_slab_matches_the_transported_disk",
             Need::Float64,
             polarization_gpu::gpu_stokes_of_a_thin_volumetric_slab_matches_the_transported_disk,
+        ),
+        (
+            "gpu_stokes_of_a_thick_volumetric_slab_lies_among_its_transported_planes",
+            Need::Float64,
+            polarization_gpu::gpu_stokes_of_a_thick_volumetric_slab_lies_among_its_transported_planes,
         ),
         (
             "the_spinning_holes_split_draws_what_the_single_dispatch_draws",

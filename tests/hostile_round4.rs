@@ -200,10 +200,6 @@ fn a_volumetric_disk_gets_the_stokes_aov_and_its_numbers_but_not_the_geodesic_on
         let args = [
             "--aov",
             "stokes",
-            "--width",
-            "64",
-            "--height",
-            "36",
             "--out",
             out.to_str().expect("utf-8"),
             "--json",
