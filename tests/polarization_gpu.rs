@@ -258,7 +258,7 @@ fn check_cameras(cameras: &[(f64, [f64; 3], &str, f64)], env: &[(&str, &str)]) {
 
 /// The volumetric disk's summed samples (each its own Walker-Penrose
 /// constant; src/physics/kerr/transport/tests.rs holds each sample off the
-/// equator against the transport to 1e-6 rad): in a slab 0.002 rs thick
+/// equator against the transport to 1e-6 rad): in a slab 0.004 rs thick
 /// they draw the thin disk's electric vector, within 1e-4 rad of the
 /// transported one at the 99th percentile, and P / I the fraction within
 /// 1e-3. Run by tests/device.rs (the spinning hole's 64-bit build, a* = 0
@@ -318,7 +318,7 @@ fn check_slab(cameras: &[(f64, [f64; 3], &str, f64)], env: &[(&str, &str)]) {
     println!("{}", report.join("\n"));
 }
 
-/// The volumetric disk off the equator, on the GPU: in a slab 0.25 rs
+/// The volumetric disk off the equator, on the GPU: in a slab 0.5 rs
 /// thick each ray's summed electric vector lies among those the transport
 /// finds where its path crosses seven planes through the slab (from -H to
 /// H), within 2e-4 rad, for all but 1 % of the rays whose light is of one

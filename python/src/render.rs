@@ -201,7 +201,8 @@ impl Renderer {
 
     /// An AOV, float32 (H, W, 4): `"geodesic"` (where each pixel's light
     /// path went: docs/physics.md; channel 3 the outcome code,
-    /// `blackhole.OUTCOMES`) or `"stokes"` (I, Q, U, V of the thin disk).
+    /// `blackhole.OUTCOMES`) or `"stokes"` (I, Q, U, V of the disk: a thin
+    /// disk's hit, or the volumetric gas summed along the ray).
     #[pyo3(signature = (scene, kind, width, height, *, time = None, frame = None))]
     #[allow(clippy::too_many_arguments)]
     fn aov<'py>(

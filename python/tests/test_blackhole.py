@@ -487,3 +487,32 @@ def test_a_falling_camera_inside_the_horizon_sees_the_polarized_disk(renderer, s
         seen += int((i > 0).sum())
     assert seen > 20, seen
     assert renderer.validation_counts() == (0, 0)
+
+
+@pytest.mark.parametrize("spin", [0.0, 0.9])
+def test_the_volumetric_disk_is_polarized_sample_by_sample(renderer, spin):
+    # The gas's Stokes vectors summed along each ray: finite, nothing
+    # circular, P at most the emitted fraction of I (samples at different
+    # angles only lower it), and a thin slab draws the thin disk's angle.
+    def stokes_of(disk):
+        scene = blackhole.Scene.from_toml(
+            f"[[black_hole]]\nspin = {spin}\n[camera]\nposition = [1.0, 3.0, -14.0]\n"
+            f"vfov_deg = 50\n[disk]\ninner_radius = 3.0\nouter_radius = 10.0\n{disk}"
+        )
+        return renderer.aov(scene, "stokes", 48, 27)
+
+    thick = stokes_of('kind = "volumetric"\nheight = 0.5\n')
+    assert np.isfinite(thick).all() and not thick[..., 3].any()
+    i, p = thick[..., 0], np.hypot(thick[..., 1], thick[..., 2])
+    assert (i > 0).sum() > 200
+    assert (p <= 0.7 * i * (1 + 1e-5) + 1e-30).all()
+    slab = stokes_of('kind = "volumetric"\nheight = 0.002\n')
+    thin = stokes_of('kind = "thin"\n')
+    both = (slab[..., 0] > 0) & (thin[..., 0] > 0)
+    both &= np.hypot(slab[..., 1], slab[..., 2]) > 0.99 * 0.7 * slab[..., 0]
+    assert both.sum() > 200, both.sum()
+    chi = lambda s: 0.5 * np.arctan2(s[..., 2], s[..., 1])
+    d = chi(slab) - chi(thin)
+    d = np.abs(0.5 * np.arctan2(np.sin(2 * d), np.cos(2 * d)))[both]
+    assert np.percentile(d, 99) < 1e-3, np.percentile(d, 99)
+    assert renderer.validation_counts() == (0, 0)
