@@ -195,20 +195,7 @@ fn a_volumetric_disk_gets_the_stokes_aov_and_its_numbers_but_not_the_geodesic_on
         "[disk]\nkind = \"volumetric\"\ninner_radius = 3.0\n",
         "[[black_hole]]\nspin = 0.9\n[disk]\nkind = \"volumetric\"\ninner_radius = 2.0\n",
     ] {
-        let dir = scratch();
-        let (out, json) = (path_in(&dir, "s.exr"), path_in(&dir, "s.json"));
-        let args = [
-            "--aov",
-            "stokes",
-            "--out",
-            out.to_str().expect("utf-8"),
-            "--json",
-            json.to_str().expect("utf-8"),
-        ];
-        let (code, stdout, stderr) = run(render_scene(&dir, toml, &args));
-        assert_clean(code, &stdout, &stderr);
-        assert!(out.exists() && json.exists(), "{toml}: {stdout}{stderr}");
-        assert!(stdout.contains("beta_2"), "{toml}: {stdout}");
+        let (dir, out) = stokes_with_numbers(toml);
         let aov = image::open(&out).expect("EXR").to_rgba32f();
         let lit = aov.pixels().filter(|p| p.0[0] > 0.0).count();
         assert!(lit > 100, "{toml}: {lit} pixels with light");
@@ -242,19 +229,26 @@ fn a_falling_camera_inside_the_horizon_gets_the_stokes_aov_and_its_numbers() {
         "[camera]\nposition = [0.0, 0.1, 0.5]\nobserver = \"falling\"\n",
         "[[black_hole]]\nspin = 0.9\n[camera]\nposition = [0.0, 0.2, -0.55]\nobserver = \"falling\"\n",
     ] {
-        let dir = scratch();
-        let (out, json) = (path_in(&dir, "s.exr"), path_in(&dir, "s.json"));
-        let args = [
-            "--aov",
-            "stokes",
-            "--out",
-            out.to_str().expect("utf-8"),
-            "--json",
-            json.to_str().expect("utf-8"),
-        ];
-        let (code, stdout, stderr) = run(render_scene(&dir, toml, &args));
-        assert_clean(code, &stdout, &stderr);
-        assert!(out.exists() && json.exists(), "{toml}: {stdout}{stderr}");
-        assert!(stdout.contains("beta_2"), "{toml}: {stdout}");
+        stokes_with_numbers(toml);
     }
+}
+
+/// `render --aov stokes --json` of the scene `toml`: clean, the EXR and
+/// the JSON written, beta_2 printed; the scratch folder and the EXR.
+fn stokes_with_numbers(toml: &str) -> (tempfile::TempDir, std::path::PathBuf) {
+    let dir = scratch();
+    let (out, json) = (path_in(&dir, "s.exr"), path_in(&dir, "s.json"));
+    let args = [
+        "--aov",
+        "stokes",
+        "--out",
+        out.to_str().expect("utf-8"),
+        "--json",
+        json.to_str().expect("utf-8"),
+    ];
+    let (code, stdout, stderr) = run(render_scene(&dir, toml, &args));
+    assert_clean(code, &stdout, &stderr);
+    assert!(out.exists() && json.exists(), "{toml}: {stdout}{stderr}");
+    assert!(stdout.contains("beta_2"), "{toml}: {stdout}");
+    (dir, out)
 }

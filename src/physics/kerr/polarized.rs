@@ -9,6 +9,7 @@
 //! transport.rs, integrates the parallel transport instead.
 
 use glam::DVec3;
+use num_complex::Complex64;
 
 use super::angular::Ordinary;
 use super::radial::{Radial, r_potential};
@@ -28,6 +29,27 @@ use crate::physics::polarization::{
 /// frame's triad.
 pub fn on_triad(f: &LocalFrame, v0: f64, v: DVec3) -> [f64; 4] {
     [v0, v.dot(f.e_r), v.dot(f.e_theta), v.dot(f.e_phi)]
+}
+
+/// The electric vector's angle east of north of constant `kappa` at a
+/// camera at frame `f` moving at `beta` through the ZAMO's, for the pixel
+/// along `d` with up `up`: the photon, north and west boosted into the
+/// ZAMO's frame.
+pub fn camera_angle(
+    f: &LocalFrame,
+    a: f64,
+    d: DVec3,
+    up: DVec3,
+    beta: DVec3,
+    kappa: Complex64,
+) -> f64 {
+    let (nn, ww) = sky_basis(d, up);
+    let zc = Zamo::at(f.r, f.cos_theta, a);
+    let lift = |v0: f64, v: DVec3| {
+        let (t, s) = boost(beta, v0, v);
+        on_triad(f, t, s)
+    };
+    angle_at_camera(&zc, kappa, lift(1.0, -d), lift(0.0, nn), lift(0.0, ww))
 }
 
 /// The photon of constants (lambda, eta) crossing the equator at r (M)
@@ -107,15 +129,7 @@ pub fn stokes(
     if i == 0.0 {
         return Ok(Seen::default());
     }
-    let kappa = walker_penrose(&ze, pe, e.f);
-    // At the camera: the photon, north and west, boosted into the ZAMO's frame.
-    let (nn, ww) = sky_basis(d, up);
-    let zc = Zamo::at(f.r, f.cos_theta, a);
-    let lift = |v0: f64, v: DVec3| {
-        let (t, s) = boost(beta, v0, v);
-        on_triad(&f, t, s)
-    };
-    let chi = angle_at_camera(&zc, kappa, lift(1.0, -d), lift(0.0, nn), lift(0.0, ww));
+    let chi = camera_angle(&f, a, d, up, beta, walker_penrose(&ze, pe, e.f));
     Ok(Seen {
         stokes: Stokes::linear(i, em.fraction, chi),
         sin_b: e.sin_b,

@@ -185,20 +185,20 @@ pub fn stokes_transported_moving(
     disk: KerrDisk,
     em: &Emission,
 ) -> Seen {
-    let a = spin;
-    let f = LocalFrame::at(2.0 * position, a);
+    let f = LocalFrame::at(2.0 * position, spin);
+    transported(&f, spin, moving_covectors(&f, spin, d, up, beta), disk, em)
+}
+
+/// The photon along `d` and the sky's north and west across it, of a
+/// camera at frame `f` moving at `beta` through the ZAMO's: Kerr-Schild
+/// covectors.
+fn moving_covectors(f: &LocalFrame, a: f64, d: DVec3, up: DVec3, beta: DVec3) -> [[f64; 4]; 3] {
     let (nn, ww) = sky_basis(d, up);
     let lift = |v0: f64, v: DVec3| {
         let (t, s) = boost(beta, v0, v);
-        zamo_covector(&f, a, [t, s.dot(f.e_r), s.dot(f.e_theta), s.dot(f.e_phi)])
+        zamo_covector(f, a, [t, s.dot(f.e_r), s.dot(f.e_theta), s.dot(f.e_phi)])
     };
-    transported(
-        &f,
-        a,
-        [lift(1.0, -d), lift(0.0, nn), lift(0.0, ww)],
-        disk,
-        em,
-    )
+    [lift(1.0, -d), lift(0.0, nn), lift(0.0, ww)]
 }
 
 /// [`stokes_transported`] for the camera falling from rest at infinity,

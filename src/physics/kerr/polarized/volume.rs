@@ -15,10 +15,9 @@ use super::super::radial::r_potential;
 use super::super::{
     KerrObserver, PlacementError, frame::Constants, observer_velocity, to_zamo_frame,
 };
-use super::on_triad;
+use super::camera_angle;
 use crate::physics::polarization::{
-    Emission, Seen, Stokes, Zamo, angle_at_camera, boost, emit_at, gas_speed_at, sky_basis,
-    walker_penrose,
+    Emission, Seen, Stokes, Zamo, emit_at, gas_speed_at, walker_penrose,
 };
 
 /// The photon of constants (lambda, eta) at `z` with backward signs s_r,
@@ -94,15 +93,7 @@ pub fn sample_stokes(
     let g = doppler / (cc.energy.abs() * e.energy * p[0]);
     let j = (0.5 * r).powf(-em.emissivity_index) * e.sin_b.powf(1.0 + em.spectral_index);
     let i = g.powf(2.0 + em.spectral_index) * j;
-    let kappa = walker_penrose(&z, p, e.f);
-    let f = cc.frame;
-    let (nn, ww) = sky_basis(d, up);
-    let zc = Zamo::at(f.r, f.cos_theta, a);
-    let lift = |v0: f64, v: DVec3| {
-        let (t, s) = boost(beta, v0, v);
-        on_triad(&f, t, s)
-    };
-    let chi = angle_at_camera(&zc, kappa, lift(1.0, -d), lift(0.0, nn), lift(0.0, ww));
+    let chi = camera_angle(&cc.frame, a, d, up, beta, walker_penrose(&z, p, e.f));
     Ok(Seen {
         stokes: Stokes::linear(i, em.fraction, chi),
         sin_b: e.sin_b,

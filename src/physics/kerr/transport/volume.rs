@@ -9,8 +9,8 @@ use glam::DVec3;
 
 use super::super::schild::{backward, bl_r};
 use super::super::{KerrDisk, LocalFrame};
-use super::{carried, gas_frame, pair, zamo_covector};
-use crate::physics::polarization::{Emission, Stokes, boost, sky_basis};
+use super::{carried, gas_frame, moving_covectors, pair};
+use crate::physics::polarization::{Emission, Stokes};
 
 /// A sample the transport reached: its Boyer-Lindquist r (M) and cos
 /// theta, the backward motion's signs of dr and d theta there, and its
@@ -47,12 +47,7 @@ pub fn volume_sample_transported(
 ) -> Option<VolumeSeen> {
     let a = spin;
     let f = LocalFrame::at(2.0 * position, a);
-    let (nn, ww) = sky_basis(d, up);
-    let lift = |v0: f64, v: DVec3| {
-        let (t, s) = boost(beta, v0, v);
-        zamo_covector(&f, a, [t, s.dot(f.e_r), s.dot(f.e_theta), s.dot(f.e_phi)])
-    };
-    let pnw = [lift(1.0, -d), lift(0.0, nn), lift(0.0, ww)];
+    let pnw = moving_covectors(&f, a, d, up, beta);
     let (c, p_t, r) = carried(&f, a, pnw, disk, height)?;
     let x = (c.x.x * c.x.x + c.x.y * c.x.y - a * a)
         .max(0.0)
